@@ -1,0 +1,59 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_LEARN_MORPHABLE_PART_MODEL_H
+#define CGAL_MPM_LEARN_MORPHABLE_PART_MODEL_H
+
+#include <CGAL/MPM/Indexed_mesh.h>
+#include <CGAL/MPM/Model_parameters.h>
+#include <CGAL/MPM/Morphable_part_model.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+
+/// \ingroup PkgMPMRef
+/// A labelled mesh and what the user says about it.
+struct Training_input
+{
+  Labeled_mesh mesh;     ///< geometry and per-face part labels
+  Annotation annotation; ///< part types, landmarks, parameters
+};
+
+/// \ingroup PkgMPMRef
+/// Options of the learning step.
+struct Learning_options
+{
+  /// Called with a stage name and the fraction done (0..1) on long work.
+  std::function<void(const std::string& stage, double fraction)> progress;
+  /// Called with one line per warning (for example an isolated part).
+  std::function<void(const std::string& warning)> warning;
+};
+
+/// \ingroup PkgMPMRef
+/// Learns a morphable part model from one or more labelled meshes whose
+/// same-type parts share connectivity (known correspondence: within each
+/// part, vertices are numbered by first appearance in its faces, in face
+/// order). Finds boundary dockings (shared seam edges) and generalized
+/// dockings (parts of different connected components within the docking
+/// radius), learns a shape space per part type and per docking rule, and
+/// collects the grammar. Instances and rules are pooled across all inputs;
+/// parameters are taken from the first input's annotation.
+///
+/// Throws `Input_error` for invalid input (naming the mesh and element: a
+/// part type without instances, instances of one type with different
+/// connectivity, an empty part, bad geometry).
+Morphable_part_model learn_morphable_part_model(const std::vector<Training_input>& inputs,
+                                                const Learning_options& options = Learning_options());
+
+/// \ingroup PkgMPMRef
+/// Convenience overload for a single labelled mesh.
+Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const Annotation& annotation,
+                                                const Learning_options& options = Learning_options());
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif
