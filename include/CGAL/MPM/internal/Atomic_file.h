@@ -17,6 +17,11 @@ namespace internal {
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 
+// Throws Input_error naming `path` unless it is an existing, readable file
+// (not a directory), so that readers which only report "failed" (CGAL's)
+// are never the first to meet a missing file.
+void check_readable_file(const std::string& path);
+
 // Whole content of a file; throws Input_error naming `path` when it cannot be read.
 std::string read_file(const std::string& path);
 

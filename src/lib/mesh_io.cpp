@@ -1,0 +1,666 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Atomic_file.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <string_view>
+#include <unordered_map>
+
+namespace CGAL {
+namespace MPM {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point_3 = Kernel::Point_3;
+
+std::string lower_extension(const std::string& path)
+{
+  std::string e = fs::path(path).extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return e;
+}
+
+// A token from a file, fit for a one-line message: garbage bytes would
+// otherwise break the line or the terminal.
+std::string printable(std::string_view token)
+{
+  std::string r = "\"";
+  for(std::size_t i = 0; i < token.size() && i < 24; ++i)
+    r += std::isprint(static_cast<unsigned char>(token[i])) ? token[i] : '?';
+  if(token.size() > 24) r += "...";
+  return r + "\"";
+}
+
+std::string face_name(int f) { return "face " + std::to_string(f); }
+std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
+
+// ----------------------------------------------------------------------------
+// Text scanning, shared by the OFF header check, the diagnosis of files CGAL
+// rejects and the .seg reader.
+
+struct Token
+{
+  std::string_view text;
+  int line = 0;
+};
+
+class Text_scanner
+{
+public:
+  explicit Text_scanner(std::string_view text) : text_(text) {}
+
+  // Next white-space separated token; '#' starts a comment up to the end of the line.
+  bool next(Token& t)
+  {
+    for(;;) {
+      while(pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
+        if(text_[pos_] == '\n') ++line_;
+        ++pos_;
+      }
+      if(pos_ >= text_.size()) return false;
+      if(comments_ && text_[pos_] == '#') {
+        while(pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+        continue;
+      }
+      break;
+    }
+    const std::size_t b = pos_;
+    while(pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))
+          && !(comments_ && text_[pos_] == '#'))
+      ++pos_;
+    t.text = text_.substr(b, pos_ - b);
+    t.line = line_;
+    return true;
+  }
+
+  // The tokens left on the line of the last token (OFF vertices and faces are lines).
+  std::vector<Token> rest_of_line()
+  {
+    std::vector<Token> r;
+    const int line = line_;
+    Token t;
+    std::size_t save_pos = pos_;
+    int save_line = line_;
+    while(next(t) && t.line == line) {
+      r.push_back(t);
+      save_pos = pos_;
+      save_line = line_;
+    }
+    pos_ = save_pos;
+    line_ = save_line;
+    return r;
+  }
+
+  std::size_t position() const { return pos_; }
+  void disable_comments() { comments_ = false; }
+
+private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  int line_ = 1;
+  bool comments_ = true;
+};
+
+template <class Integer>
+bool parse_integer(std::string_view s, Integer& value)
+{
+  if(!s.empty() && s.front() == '+') s.remove_prefix(1);
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), value);
+  return r.ec == std::errc() && r.ptr == s.data() + s.size();
+}
+
+bool parse_double(std::string_view s, double& value)
+{
+  // strtod, unlike from_chars in older libraries, also accepts "nan" and "inf",
+  // which must be recognized to be reported as non-finite.
+  const std::string copy(s);
+  char* end = nullptr;
+  value = std::strtod(copy.c_str(), &end);
+  return !copy.empty() && end == copy.c_str() + copy.size();
+}
+
+// ----------------------------------------------------------------------------
+// OFF specifics.
+
+struct Off_header
+{
+  bool binary = false;
+  std::uint64_t vertices = 0, faces = 0;
+};
+
+// Parses the counts of an OFF header, or returns false when they cannot be
+// found (CGAL's reader then reports the failure).
+bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
+{
+  Token t;
+  if(!s.next(t)) return false;
+  bool counts_follow = true;
+  if(t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF") {
+    if(t.text.find('n') != std::string_view::npos) { // nOFF: a dimension precedes the counts
+      Token dimension;
+      if(!s.next(dimension)) return false;
+    }
+    const std::size_t after_keyword = s.position();
+    Token b;
+    Text_scanner peek = s;
+    if(peek.next(b) && b.text == "BINARY") {
+      h.binary = true;
+      std::size_t p = text.find('\n', after_keyword);
+      if(p == std::string_view::npos) return false;
+      ++p;
+      if(text.size() < p + 12) return false;
+      auto be32 = [&](std::size_t o) {
+        std::uint32_t v = 0;
+        for(int i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(text[o + i]);
+        return v;
+      };
+      h.vertices = be32(p);
+      h.faces = be32(p + 4);
+      return true;
+    }
+  } else {
+    counts_follow = false; // header-less OFF: t is already the vertex count
+  }
+  Token nv = t, nf;
+  if(counts_follow && !s.next(nv)) return false;
+  if(!s.next(nf)) return false;
+  Token ne;
+  s.next(ne); // the edge count is ignored by every reader
+  return parse_integer(nv.text, h.vertices) && parse_integer(nf.text, h.faces);
+}
+
+// CGAL's OFF reader allocates the announced number of vertices and faces
+// before reading them: refuse counts the file is too small to hold.
+void check_off_counts_fit(const std::string& path, std::uintmax_t file_size)
+{
+  std::ifstream in(path, std::ios::in | std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  Off_header h;
+  Text_scanner s(head);
+  if(!parse_off_header(head, h, s)) return;
+  // Smallest possible records: "0 0 0\n" and "3 0 1 2\n" as text, three
+  // floats and a corner count in binary.
+  const std::uint64_t vertex_bytes = h.binary ? 12 : 6, face_bytes = h.binary ? 4 : 8;
+  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() / 16;
+  if(h.vertices > limit || h.faces > limit
+     || h.vertices * vertex_bytes + h.faces * face_bytes > file_size)
+    throw Input_error(path, "header",
+                      "announces " + std::to_string(h.vertices) + " vertices and " +
+                        std::to_string(h.faces) + " faces, more than a file of " +
+                        std::to_string(file_size) + " bytes can hold (truncated or corrupt)");
+}
+
+// Finds why CGAL rejected an ASCII OFF file, so that the message names the
+// element. Returns without throwing when it finds nothing wrong.
+void diagnose_off(const std::string& path, const std::string& text)
+{
+  Text_scanner s(text);
+  Off_header h;
+  {
+    Text_scanner first = s;
+    Token t;
+    if(!first.next(t))
+      throw Input_error(path, "", "contains only comments and white space");
+    const bool keyword = t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF";
+    std::uint64_t n;
+    if(!keyword && !parse_integer(t.text, n))
+      throw Input_error(path, "", "is not an OFF file (it starts with " + printable(t.text) + ")");
+  }
+  if(!parse_off_header(text, h, s))
+    throw Input_error(path, "header", "expected the vertex, face and edge counts");
+  if(h.binary) return;
+
+  Token t;
+  for(std::uint64_t v = 0; v < h.vertices; ++v) {
+    const std::string element = vertex_name(int(v));
+    if(!s.next(t))
+      throw Input_error(path, "", "truncated: the file ends after " + std::to_string(v) + " of " +
+                                      std::to_string(h.vertices) + " vertices");
+    std::vector<Token> line{t};
+    for(const Token& r : s.rest_of_line()) line.push_back(r);
+    if(line.size() < 3)
+      throw Input_error(path, element, "line " + std::to_string(t.line) + ": fewer than 3 coordinates");
+    for(int c = 0; c < 3; ++c) {
+      double x;
+      if(!parse_double(line[c].text, x))
+        throw Input_error(path, element, "line " + std::to_string(t.line) + ": " + printable(line[c].text) +
+                                           " is not a number");
+      if(!std::isfinite(x))
+        throw Input_error(path, element, "non-finite coordinate " + printable(line[c].text) + " (line " +
+                                           std::to_string(t.line) + ")");
+    }
+  }
+  for(std::uint64_t f = 0; f < h.faces; ++f) {
+    const std::string element = face_name(int(f));
+    if(!s.next(t))
+      throw Input_error(path, "", "truncated: the file ends after " + std::to_string(f) + " of " +
+                                      std::to_string(h.faces) + " faces");
+    std::uint64_t corners;
+    if(!parse_integer(t.text, corners))
+      throw Input_error(path, element, "line " + std::to_string(t.line) + ": corner count " +
+                                         printable(t.text) + " is not a non-negative integer");
+    const std::vector<Token> line = s.rest_of_line();
+    if(line.size() < corners)
+      throw Input_error(path, element, "line " + std::to_string(t.line) + ": " +
+                                         std::to_string(line.size()) + " of " + std::to_string(corners) +
+                                         " vertex indices (truncated?)");
+    for(std::uint64_t c = 0; c < corners; ++c) {
+      std::int64_t id;
+      if(!parse_integer(line[c].text, id))
+        throw Input_error(path, element, "line " + std::to_string(t.line) + ": " + printable(line[c].text) +
+                                           " is not a vertex index");
+      if(id < 0 || std::uint64_t(id) >= h.vertices)
+        throw Input_error(path, element, "vertex index " + std::to_string(id) +
+                                           " is out of range (the file has " +
+                                           std::to_string(h.vertices) + " vertices)");
+    }
+  }
+}
+
+// Finds the vertex coordinate or face corner that made CGAL reject an OBJ file.
+void diagnose_obj(const std::string& path, const std::string& text)
+{
+  std::istringstream lines(text);
+  std::string line;
+  std::vector<std::pair<int, std::string>> face_lines;
+  int line_number = 0;
+  std::int64_t vertices = 0;
+  while(std::getline(lines, line)) {
+    ++line_number;
+    if(line.size() < 2 || !std::isspace(static_cast<unsigned char>(line[1]))) continue;
+    if(line[0] == 'f') face_lines.emplace_back(line_number, line.substr(1));
+    if(line[0] != 'v') continue;
+    Text_scanner s(std::string_view(line).substr(1));
+    const std::string element = vertex_name(int(vertices++));
+    Token t;
+    for(int c = 0; c < 3; ++c) {
+      double x;
+      if(!s.next(t))
+        throw Input_error(path, element, "line " + std::to_string(line_number) + ": fewer than 3 coordinates");
+      if(!parse_double(t.text, x))
+        throw Input_error(path, element, "line " + std::to_string(line_number) + ": " + printable(t.text) +
+                                           " is not a number");
+      if(!std::isfinite(x))
+        throw Input_error(path, element, "non-finite coordinate " + printable(t.text) + " (line " +
+                                           std::to_string(line_number) + ")");
+    }
+  }
+  for(std::size_t f = 0; f < face_lines.size(); ++f) {
+    Text_scanner s(face_lines[f].second);
+    Token t;
+    while(s.next(t)) {
+      // A corner is "v", "v/vt", "v//vn" or "v/vt/vn"; negative v counts back from the end.
+      const std::string_view v = t.text.substr(0, t.text.find('/'));
+      std::int64_t id;
+      if(!parse_integer(v, id))
+        throw Input_error(path, face_name(int(f)), "line " + std::to_string(face_lines[f].first) + ": " +
+                                                     printable(t.text) + " is not a vertex index");
+      if(id == 0 || id > vertices || id < -vertices)
+        throw Input_error(path, face_name(int(f)), "vertex index " + std::to_string(id) +
+                                                     " is out of range (the file has " +
+                                                     std::to_string(vertices) + " vertices)");
+    }
+  }
+}
+
+// ----------------------------------------------------------------------------
+
+// CGAL's OFF reader sizes a polygon from the corner count in the file before
+// reading the corners: bound it by the file size so a corrupt count cannot
+// allocate gigabytes.
+struct Corner_limit_exceeded {};
+
+struct Bounded_polygon : std::vector<std::size_t>
+{
+  static thread_local std::size_t corner_limit;
+
+  void resize(std::size_t n)
+  {
+    if(n > corner_limit) throw Corner_limit_exceeded();
+    std::vector<std::size_t>::resize(n);
+  }
+};
+thread_local std::size_t Bounded_polygon::corner_limit = 0;
+
+// Checks shared by the file reader and validate_labeled_mesh(): finite
+// coordinates, in-range distinct corners, non-zero area. `file_face` maps
+// triangles to the face numbers the user sees (null: triangle numbers).
+void check_mesh_geometry(const Indexed_mesh& mesh, const std::string& source,
+                         const std::vector<int>* file_face)
+{
+  if(mesh.number_of_faces() == 0)
+    throw Input_error(source, "", "contains no faces");
+  const int n = mesh.number_of_vertices();
+  for(int v = 0; v < n; ++v)
+    if(!mesh.points.row(v).allFinite()) {
+      std::ostringstream c;
+      c << mesh.points(v, 0) << ", " << mesh.points(v, 1) << ", " << mesh.points(v, 2);
+      throw Input_error(source, vertex_name(v), "non-finite coordinate (" + c.str() + ")");
+    }
+  const double diagonal_squared =
+    n == 0 ? 0. : (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).squaredNorm();
+  // Twice the area of a triangle counted as flat: 1e-14 of the squared
+  // bounding-box diagonal, far below any modelled feature yet above rounding.
+  const double flat_cross_norm = 2e-14 * diagonal_squared;
+
+  for(int t = 0; t < mesh.number_of_faces(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    const std::string element = face_name(file_face ? (*file_face)[t] : t);
+    const std::string corners = std::to_string(tri[0]) + ", " + std::to_string(tri[1]) + ", " +
+                                std::to_string(tri[2]);
+    for(int c = 0; c < 3; ++c)
+      if(tri[c] < 0 || tri[c] >= n)
+        throw Input_error(source, element, "vertex index " + std::to_string(tri[c]) +
+                                             " is out of range (the mesh has " + std::to_string(n) +
+                                             " vertices)");
+    if(tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+      throw Input_error(source, element, "degenerate triangle (vertices " + corners + ")");
+    const Eigen::Vector3d a = mesh.points.row(tri[0]), b = mesh.points.row(tri[1]),
+                          c = mesh.points.row(tri[2]);
+    if((b - a).cross(c - a).norm() <= flat_cross_norm)
+      throw Input_error(source, element, "degenerate triangle (zero area, vertices " + corners + ")");
+  }
+}
+
+Mesh_file mesh_from_polygons(const std::string& path, const std::vector<Point_3>& points,
+                             const std::vector<Bounded_polygon>& polygons, bool one_based_indices)
+{
+  if(polygons.empty())
+    throw Input_error(path, "", "contains no faces");
+  if(points.size() > std::size_t(std::numeric_limits<int>::max())
+     || polygons.size() > std::size_t(std::numeric_limits<int>::max()))
+    throw Input_error(path, "", "too many vertices or faces for this library (more than 2^31)");
+
+  Mesh_file r;
+  const std::size_t n = points.size();
+  r.mesh.points.resize(Eigen::Index(n), 3);
+  for(std::size_t v = 0; v < n; ++v)
+    r.mesh.points.row(Eigen::Index(v)) << points[v].x(), points[v].y(), points[v].z();
+  r.number_of_file_faces = int(polygons.size());
+
+  int fanned = 0, first_fanned = -1;
+  std::vector<char> used(n, 0);
+  for(std::size_t f = 0; f < polygons.size(); ++f) {
+    const Bounded_polygon& p = polygons[f];
+    const std::string element = face_name(int(f));
+    if(p.size() < 3)
+      throw Input_error(path, element, "has " + std::to_string(p.size()) +
+                                         " corners (a face needs at least 3)");
+    for(std::size_t id : p)
+      if(id >= n)
+        throw Input_error(path, element, "vertex index " +
+                                           std::to_string(one_based_indices ? id + 1 : id) +
+                                           " is out of range (the file has " + std::to_string(n) +
+                                           " vertices)");
+    if(p.size() > 3 && fanned++ == 0) first_fanned = int(f);
+    for(std::size_t c = 1; c + 1 < p.size(); ++c) {
+      r.mesh.triangles.push_back({int(p[0]), int(p[c]), int(p[c + 1])});
+      r.file_face.push_back(int(f));
+    }
+    for(std::size_t id : p) used[id] = 1;
+  }
+  check_mesh_geometry(r.mesh, path, &r.file_face);
+
+  if(fanned > 0)
+    r.warnings.push_back(path + ": " + std::to_string(fanned) + " polygon" + (fanned > 1 ? "s" : "") +
+                         " with more than 3 corners " + (fanned > 1 ? "were" : "was") +
+                         " fan-triangulated (first: face " + std::to_string(first_fanned) + ")");
+  const std::size_t unused = std::size_t(std::count(used.begin(), used.end(), 0));
+  if(unused > 0) {
+    const std::size_t first = std::size_t(std::find(used.begin(), used.end(), 0) - used.begin());
+    r.warnings.push_back(path + ": " + std::to_string(unused) + " " + (unused > 1 ? "vertices are" : "vertex is") +
+                         " not used by any face (first: vertex " + std::to_string(first) +
+                         "); kept");
+  }
+  return r;
+}
+
+// Face labels stored as an integer face property of a PLY file, in file face order.
+std::vector<int> read_ply_face_property(const std::string& path, const std::string& name)
+{
+  if(lower_extension(path) != ".ply")
+    throw Input_error(path, "", "face property labels (property:" + name + ") need a PLY file");
+  CGAL::Surface_mesh<Point_3> sm;
+  std::ifstream in(path, std::ios::in | std::ios::binary);
+  if(!in || !CGAL::IO::read_PLY(in, sm))
+    throw Input_error(path, "", "CGAL's Surface_mesh PLY reader cannot read the file, which it needs "
+                                "for face property \"" + name + "\" (is the mesh manifold?)");
+  const std::string key = "f:" + name;
+  std::vector<int> labels;
+  using F = CGAL::Surface_mesh<Point_3>::Face_index;
+  auto copy = [&](auto tag) {
+    using T = decltype(tag);
+    auto found = sm.template property_map<F, T>(key);
+    if(!found.second) return false;
+    for(F f : sm.faces()) {
+      const auto value = found.first[f];
+      if(value < 0)
+        throw Input_error(path, face_name(int(labels.size())),
+                          "negative label " + std::to_string(value) + " in face property \"" + name + "\"");
+      if(std::uintmax_t(value) > std::uintmax_t(std::numeric_limits<int>::max()))
+        throw Input_error(path, face_name(int(labels.size())), "label " + std::to_string(value) +
+                                                                   " is too large");
+      labels.push_back(int(value));
+    }
+    return true;
+  };
+  if(copy(std::int8_t()) || copy(std::uint8_t()) || copy(std::int16_t()) || copy(std::uint16_t())
+     || copy(std::int32_t()) || copy(std::uint32_t()))
+    return labels;
+  if(sm.property_map<F, float>(key).second || sm.property_map<F, double>(key).second)
+    throw Input_error(path, "", "face property \"" + name + "\" holds floating-point values, not integer labels");
+  std::string available;
+  for(const std::string& p : sm.properties<F>())
+    if(p.rfind("f:", 0) == 0 && p != "f:connectivity" && p != "f:removed")
+      available += (available.empty() ? "" : ", ") + p.substr(2);
+  throw Input_error(path, "", "has no face property \"" + name + "\" (face properties: " +
+                                (available.empty() ? "none" : available) + ")");
+}
+
+} // namespace
+
+Mesh_file read_mesh_file(const std::string& path)
+{
+  internal::check_readable_file(path);
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if(ec || size == 0)
+    throw Input_error(path, "", "file is empty");
+  const std::string ext = lower_extension(path);
+  if(ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl")
+    throw Input_error(path, "", "unsupported mesh file extension " + printable(ext.empty() ? "(none)" : ext) +
+                                  " (supported: .off, .obj, .ply, .stl)");
+  if(ext == ".off")
+    check_off_counts_fit(path, size);
+
+  std::vector<Point_3> points;
+  std::vector<Bounded_polygon> polygons;
+  Bounded_polygon::corner_limit = std::size_t(size / 2);
+  bool ok = false;
+  try {
+    ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
+  } catch(const Corner_limit_exceeded&) {
+    throw Input_error(path, "", "a face announces more corners than the file can hold (corrupt file)");
+  }
+  if(!ok) {
+    if(ext == ".off") diagnose_off(path, internal::read_file(path));
+    if(ext == ".obj") diagnose_obj(path, internal::read_file(path));
+    throw Input_error(path, "", "cannot be read as " + ext.substr(1) + " (malformed or truncated file)");
+  }
+  return mesh_from_polygons(path, points, polygons, ext == ".obj");
+}
+
+std::vector<int> read_seg_file(const std::string& path)
+{
+  const std::string text = internal::read_file(path);
+  Text_scanner s(text);
+  s.disable_comments();
+  std::vector<int> labels;
+  Token t;
+  while(s.next(t)) {
+    const std::string element = "line " + std::to_string(t.line);
+    long long value;
+    const bool integer = parse_integer(t.text, value);
+    if(!integer) {
+      const bool digits = !t.text.empty() &&
+        std::all_of(t.text.begin() + (t.text[0] == '-' || t.text[0] == '+'), t.text.end(),
+                    [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+      throw Input_error(path, element, printable(t.text) + (digits ? " is too large for a label"
+                                                                : " is not an integer label"));
+    }
+    if(value < 0)
+      throw Input_error(path, element, "negative label " + std::to_string(value));
+    if(value > std::numeric_limits<int>::max())
+      throw Input_error(path, element, printable(t.text) + " is too large for a label");
+    labels.push_back(int(value));
+  }
+  if(labels.empty())
+    throw Input_error(path, "", "is empty (expected one label per face)");
+  return labels;
+}
+
+std::vector<int> connected_component_labels(const Indexed_mesh& mesh)
+{
+  const int nf = mesh.number_of_faces();
+  std::vector<int> parent(static_cast<std::size_t>(nf));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int f) {
+    while(parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  std::unordered_map<std::uint64_t, int> face_of_edge;
+  face_of_edge.reserve(std::size_t(nf) * 2);
+  for(int f = 0; f < nf; ++f)
+    for(int c = 0; c < 3; ++c) {
+      const std::uint32_t a = std::uint32_t(mesh.triangles[f][c]), b = std::uint32_t(mesh.triangles[f][(c + 1) % 3]);
+      const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+      const auto inserted = face_of_edge.emplace(key, f);
+      if(!inserted.second) {
+        const int r1 = find(f), r2 = find(inserted.first->second);
+        parent[std::max(r1, r2)] = std::min(r1, r2);
+      }
+    }
+  std::vector<int> labels(std::size_t(nf), -1), label_of_root(std::size_t(nf), -1);
+  int next = 0;
+  for(int f = 0; f < nf; ++f) {
+    int& l = label_of_root[find(f)];
+    if(l < 0) l = next++;
+    labels[f] = l;
+  }
+  return labels;
+}
+
+Labeled_mesh read_labeled_mesh(const std::string& mesh_path, const std::string& labels,
+                               std::vector<std::string>* warnings)
+{
+  Mesh_file file = read_mesh_file(mesh_path);
+  if(warnings) warnings->insert(warnings->end(), file.warnings.begin(), file.warnings.end());
+
+  Labeled_mesh r;
+  r.source = mesh_path;
+  if(labels == "components") {
+    r.face_labels = connected_component_labels(file.mesh);
+  } else {
+    const std::string property_prefix = "property:";
+    const bool from_property = labels.rfind(property_prefix, 0) == 0;
+    const std::vector<int> per_file_face = from_property
+      ? read_ply_face_property(mesh_path, labels.substr(property_prefix.size()))
+      : read_seg_file(labels);
+    if(per_file_face.size() != std::size_t(file.number_of_file_faces))
+      throw Input_error(from_property ? mesh_path : labels, "",
+                        "has " + std::to_string(per_file_face.size()) + " labels but " + mesh_path +
+                          " has " + std::to_string(file.number_of_file_faces) + " faces");
+    r.face_labels.reserve(file.file_face.size());
+    for(int f : file.file_face) r.face_labels.push_back(per_file_face[std::size_t(f)]);
+  }
+  r.mesh = std::move(file.mesh);
+  return r;
+}
+
+void write_mesh_file(const Indexed_mesh& mesh, const std::string& path,
+                     const Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>* face_colors)
+{
+  const std::string ext = lower_extension(path);
+  if(ext != ".off" && ext != ".obj" && ext != ".ply")
+    throw Input_error(path, "", "unsupported extension " + printable(ext.empty() ? "(none)" : ext) +
+                                  " for writing a mesh (supported: .off, .obj, .ply)");
+  if(face_colors && face_colors->rows() != mesh.number_of_faces())
+    throw Input_error(path, "", std::to_string(face_colors->rows()) + " face colours for " +
+                                  std::to_string(mesh.number_of_faces()) + " faces");
+  const bool colors = face_colors && ext == ".ply";
+
+  internal::write_file_atomically(path, [&](std::ostream& out) {
+    // 17 significant digits make every double read back exactly.
+    out << std::setprecision(17);
+    const int nv = mesh.number_of_vertices(), nf = mesh.number_of_faces();
+    if(ext == ".off") {
+      out << "OFF\n" << nv << ' ' << nf << " 0\n";
+    } else if(ext == ".ply") {
+      out << "ply\nformat ascii 1.0\ncomment written by CGAL-MPM\n"
+          << "element vertex " << nv << "\nproperty double x\nproperty double y\nproperty double z\n"
+          << "element face " << nf << "\nproperty list uchar int vertex_indices\n";
+      if(colors) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+      out << "end_header\n";
+    }
+    for(int v = 0; v < nv; ++v)
+      out << (ext == ".obj" ? "v " : "") << mesh.points(v, 0) << ' ' << mesh.points(v, 1) << ' '
+          << mesh.points(v, 2) << '\n';
+    for(int f = 0; f < nf; ++f) {
+      const Triangle& t = mesh.triangles[f];
+      if(ext == ".obj")
+        out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+      else
+        out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2];
+      if(colors)
+        out << ' ' << int((*face_colors)(f, 0)) << ' ' << int((*face_colors)(f, 1)) << ' '
+            << int((*face_colors)(f, 2));
+      if(ext != ".obj") out << '\n';
+    }
+  });
+}
+
+void write_seg_file(const std::vector<int>& labels, const std::string& path)
+{
+  internal::write_file_atomically(path, [&](std::ostream& out) {
+    for(int l : labels) out << l << '\n';
+  });
+}
+
+void validate_labeled_mesh(const Labeled_mesh& mesh)
+{
+  check_mesh_geometry(mesh.mesh, mesh.source, nullptr);
+  if(mesh.face_labels.size() != std::size_t(mesh.mesh.number_of_faces()))
+    throw Input_error(mesh.source, "", "has " + std::to_string(mesh.face_labels.size()) +
+                                         " face labels for " + std::to_string(mesh.mesh.number_of_faces()) +
+                                         " faces");
+  for(std::size_t f = 0; f < mesh.face_labels.size(); ++f)
+    if(mesh.face_labels[f] < 0)
+      throw Input_error(mesh.source, face_name(int(f)), "negative label " + std::to_string(mesh.face_labels[f]));
+}
+
+} // namespace MPM
+} // namespace CGAL

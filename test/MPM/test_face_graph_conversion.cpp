@@ -1,0 +1,140 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Io_test_support.h"
+
+#include <CGAL/MPM/Face_graph_conversion.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <boost/property_map/function_property_map.hpp>
+
+using namespace CGAL::MPM;
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Open_mesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+// A 3 x 3 vertex grid (8 triangles) plus a tetrahedron as a second component.
+const std::vector<std::array<double, 3>> points = {
+  {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0.5}, {2, 1, 0}, {0, 2, 0}, {1, 2, 0}, {2, 2, 0},
+  {5, 0, 0}, {6, 0, 0}, {5, 1, 0}, {5, 0, 1}};
+const std::vector<std::array<int, 3>> triangles = {
+  {0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}, {4, 5, 8}, {4, 8, 7},
+  {9, 11, 10}, {9, 10, 12}, {9, 12, 11}, {10, 11, 12}};
+
+Surface_mesh make_surface_mesh()
+{
+  Surface_mesh sm;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(const auto& p : points) v.push_back(sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
+  for(const auto& t : triangles) sm.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  return sm;
+}
+
+Open_mesh make_open_mesh()
+{
+  Open_mesh om;
+  std::vector<Open_mesh::VertexHandle> v;
+  for(const auto& p : points) v.push_back(om.add_vertex(Open_mesh::Point(float(p[0]), float(p[1]), float(p[2]))));
+  for(const auto& t : triangles) om.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  return om;
+}
+
+Indexed_mesh expected_mesh()
+{
+  Indexed_mesh m;
+  m.points.resize(int(points.size()), 3);
+  for(std::size_t i = 0; i < points.size(); ++i) m.points.row(int(i)) << points[i][0], points[i][1], points[i][2];
+  for(const auto& t : triangles) m.triangles.push_back({t[0], t[1], t[2]});
+  return m;
+}
+
+// Corner order may start anywhere on the face; compare up to rotation.
+Triangle canonical(Triangle t)
+{
+  while(t[0] != std::min({t[0], t[1], t[2]})) t = {t[1], t[2], t[0]};
+  return t;
+}
+
+void expect_equal_meshes(const Indexed_mesh& a, const Indexed_mesh& b)
+{
+  EXPECT_EQ(a.points, b.points);
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  for(int f = 0; f < a.number_of_faces(); ++f) EXPECT_EQ(canonical(a.triangles[f]), canonical(b.triangles[f])) << f;
+}
+
+} // namespace
+
+TEST(FaceGraphConversion, SurfaceMeshAndOpenMeshGiveTheSameMesh)
+{
+  const Indexed_mesh expected = expected_mesh();
+  const Surface_mesh sm = make_surface_mesh();
+  const Open_mesh om = make_open_mesh();
+  const Indexed_mesh from_sm = to_indexed_mesh(sm);
+  const Indexed_mesh from_om = to_indexed_mesh(om);
+  expect_equal_meshes(from_sm, expected);
+  expect_equal_meshes(from_om, expected);
+  EXPECT_EQ(from_sm.triangles, from_om.triangles);
+}
+
+TEST(FaceGraphConversion, VertexPointMapParameter)
+{
+  Surface_mesh sm = make_surface_mesh();
+  auto moved = sm.add_property_map<Surface_mesh::Vertex_index, Kernel::Point_3>("v:moved").first;
+  for(auto v : vertices(sm)) moved[v] = sm.point(v) + Kernel::Vector_3(0, 0, 10);
+  const Indexed_mesh m = to_indexed_mesh(sm, CGAL::parameters::vertex_point_map(moved));
+  Indexed_mesh expected = expected_mesh();
+  expected.points.col(2).array() += 10;
+  expect_equal_meshes(m, expected);
+}
+
+TEST(FaceGraphConversion, RemovedElementsAreSkipped)
+{
+  Surface_mesh sm = make_surface_mesh();
+  // Removal only marks the face; the conversion must follow faces(g), not the storage.
+  sm.remove_face(*faces(sm).begin());
+  const Indexed_mesh m = to_indexed_mesh(sm);
+  EXPECT_EQ(m.number_of_vertices(), int(points.size()));
+  ASSERT_EQ(m.number_of_faces(), int(triangles.size()) - 1);
+  EXPECT_EQ(canonical(m.triangles[0]), canonical({0, 4, 3}));
+}
+
+TEST(FaceGraphConversion, FaceLabelsFollowFaceOrder)
+{
+  Surface_mesh sm = make_surface_mesh();
+  auto label = sm.add_property_map<Surface_mesh::Face_index, unsigned char>("f:label", 0).first;
+  int i = 0;
+  for(auto f : faces(sm)) label[f] = static_cast<unsigned char>(i++ < 8 ? 0 : 1);
+  EXPECT_EQ(face_labels_from_map(sm, label), (std::vector<int>{0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1}));
+
+  Open_mesh om = make_open_mesh();
+  OpenMesh::FPropHandleT<int> part;
+  om.add_property(part);
+  for(auto f : om.faces()) om.property(part, f) = f.idx() * 2;
+  const auto map = boost::make_function_property_map<Open_mesh::FaceHandle>(
+    [&](Open_mesh::FaceHandle f) { return om.property(part, f); });
+  const std::vector<int> labels = face_labels_from_map(om, map);
+  ASSERT_EQ(labels.size(), triangles.size());
+  for(std::size_t f = 0; f < labels.size(); ++f) EXPECT_EQ(labels[f], int(2 * f));
+}
+
+TEST(FaceGraphConversion, NonTriangleFacesAreRejected)
+{
+  Surface_mesh sm;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(const auto& p : points) v.push_back(sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
+  sm.add_face(v[0], v[1], v[4]);
+  sm.add_face(std::vector<Surface_mesh::Vertex_index>{v[1], v[2], v[5], v[4]});
+  try {
+    to_indexed_mesh(sm);
+    ADD_FAILURE() << "no error";
+  } catch(const Input_error& e) {
+    EXPECT_EQ(e.element(), "face 1");
+    EXPECT_TRUE(mpm_test::contains_all(e.what(), {"has 4 corners"}));
+  }
+}
