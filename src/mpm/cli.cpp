@@ -362,15 +362,6 @@ void Table::print(std::ostream& out, const std::string& indent) const
 
 // ---- files -----------------------------------------------------------------
 
-void require_input_file(const std::string& path)
-{
-  std::error_code ec;
-  if(fs::is_directory(path, ec)) throw CGAL::MPM::Input_error(path, "", "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if(!in)
-    throw CGAL::MPM::Input_error(path, "", std::string("cannot open file (") + std::strerror(errno) + ")");
-}
-
 void ensure_parent_directory(const std::string& path)
 {
   const fs::path parent = fs::path(path).parent_path();

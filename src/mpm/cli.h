@@ -162,9 +162,6 @@ private:
 
 // ---- file helpers ----------------------------------------------------------
 
-/// Throws `CGAL::MPM::Input_error` naming `path` when it is not a readable file.
-void require_input_file(const std::string& path);
-
 /// Creates the parent directory of `path` when it is missing; throws
 /// `CGAL::MPM::Input_error` naming the directory when that fails.
 void ensure_parent_directory(const std::string& path);

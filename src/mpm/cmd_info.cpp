@@ -16,7 +16,6 @@ namespace {
 int run_info(const Args& args, Context& context)
 {
   const std::string path = args.positionals().front();
-  require_input_file(path);
   context.progress.update("loading " + path, 0.);
   const CGAL::MPM::Morphable_part_model model = CGAL::MPM::load_model(path);
   context.progress.done();

@@ -64,11 +64,6 @@ std::vector<Input_files> collect_inputs(const Args& args)
   return inputs;
 }
 
-bool labels_are_a_file(const std::string& labels)
-{
-  return labels != "components" && labels.compare(0, 9, "property:") != 0;
-}
-
 int run_learn(const Args& args, Context& context)
 {
   using namespace CGAL::MPM;
@@ -88,8 +83,6 @@ int run_learn(const Args& args, Context& context)
   {
     const Input_files& f = files[i];
     context.progress.update("reading " + f.mesh, double(i) / double(files.size()));
-    require_input_file(f.mesh);
-    if(labels_are_a_file(f.labels)) require_input_file(f.labels);
     Training_input input;
     std::vector<std::string> read_warnings;
     input.mesh = read_labeled_mesh(f.mesh, f.labels, &read_warnings);
@@ -97,7 +90,6 @@ int run_learn(const Args& args, Context& context)
     validate_labeled_mesh(input.mesh);
     if(!f.annotation.empty())
     {
-      require_input_file(f.annotation);
       input.annotation = read_annotation(f.annotation);
     }
     // Command-line parameters override the annotation's.

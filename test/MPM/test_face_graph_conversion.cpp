@@ -3,6 +3,10 @@
 #include "Io_test_support.h"
 
 #include <CGAL/MPM/Face_graph_conversion.h>
+#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -137,4 +141,76 @@ TEST(FaceGraphConversion, NonTriangleFacesAreRejected)
     EXPECT_EQ(e.element(), "face 1");
     EXPECT_TRUE(mpm_test::contains_all(e.what(), {"has 4 corners"}));
   }
+}
+
+// The learning API over FaceGraph gives the same model on Surface_mesh and
+// on OpenMesh as on the plain indexed mesh.
+namespace {
+
+struct Double_traits : public OpenMesh::DefaultTraits
+{
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using Open_mesh_d = OpenMesh::TriMesh_ArrayKernelT<Double_traits>;
+
+void set_point(Surface_mesh& g, Surface_mesh::Vertex_index v, double x, double y, double z)
+{
+  g.point(v) = Kernel::Point_3(x, y, z);
+}
+
+// CGAL 5.5's OpenMesh point map writes through float, so set points natively.
+void set_point(Open_mesh_d& g, Open_mesh_d::VertexHandle v, double x, double y, double z)
+{
+  g.set_point(v, Open_mesh_d::Point(x, y, z));
+}
+
+template <class Mesh>
+Morphable_part_model learn_through_face_graph(const Synthetic_model& s, Mesh& g)
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> v;
+  for(int i = 0; i < s.mesh.mesh.number_of_vertices(); ++i)
+  {
+    const auto p = s.mesh.mesh.points.row(i);
+    v.push_back(add_vertex(g));
+    set_point(g, v.back(), p(0), p(1), p(2));
+  }
+  auto labels = get(CGAL::dynamic_face_property_t<int>(), g);
+  for(int f = 0; f < s.mesh.mesh.number_of_faces(); ++f)
+  {
+    const Triangle& t = s.mesh.mesh.triangles[f];
+    const auto face = CGAL::Euler::add_face(std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>{v[t[0]], v[t[1]], v[t[2]]}, g);
+    put(labels, face, s.mesh.face_labels[f]);
+  }
+  return learn_morphable_part_model(g, labels, s.annotation);
+}
+
+void expect_same_model(const Morphable_part_model& a, const Morphable_part_model& b)
+{
+  ASSERT_EQ(a.types.size(), b.types.size());
+  for(std::size_t t = 0; t < a.types.size(); ++t)
+  {
+    EXPECT_EQ(a.types[t].name, b.types[t].name);
+    EXPECT_EQ(a.types[t].number_of_vertices, b.types[t].number_of_vertices);
+    EXPECT_EQ(a.types[t].space.number_of_modes(), b.types[t].space.number_of_modes());
+    EXPECT_LT((a.types[t].space.mean - b.types[t].space.mean).norm(), 1e-9 * a.types[t].space.mean.norm());
+  }
+  ASSERT_EQ(a.rules.size(), b.rules.size());
+  for(std::size_t r = 0; r < a.rules.size(); ++r) EXPECT_EQ(a.rules[r].points.size(), b.rules[r].points.size());
+  EXPECT_EQ(a.examples[0].graph.edges.size(), b.examples[0].graph.edges.size());
+}
+
+} // namespace
+
+TEST(FaceGraphLearning, surface_mesh_and_open_mesh_match_the_indexed_mesh)
+{
+  Synthetic_options options;
+  options.vertices = 2000;
+  const Synthetic_model s = make_synthetic_model(Synthetic_family::hexa_grid, options);
+  const Morphable_part_model reference = learn_morphable_part_model(s.mesh, s.annotation);
+
+  Surface_mesh sm;
+  expect_same_model(reference, learn_through_face_graph(s, sm));
+  Open_mesh_d om;
+  expect_same_model(reference, learn_through_face_graph(s, om));
 }

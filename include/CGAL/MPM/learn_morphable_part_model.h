@@ -3,6 +3,7 @@
 #ifndef CGAL_MPM_LEARN_MORPHABLE_PART_MODEL_H
 #define CGAL_MPM_LEARN_MORPHABLE_PART_MODEL_H
 
+#include <CGAL/MPM/Face_graph_conversion.h>
 #include <CGAL/MPM/Indexed_mesh.h>
 #include <CGAL/MPM/Model_parameters.h>
 #include <CGAL/MPM/Morphable_part_model.h>
@@ -52,6 +53,31 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
 /// Convenience overload for a single labelled mesh.
 Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const Annotation& annotation,
                                                 const Learning_options& options = Learning_options());
+
+/// \ingroup PkgMPMRef
+/// Learns from any triangulated `FaceGraph` (`CGAL::Surface_mesh`, OpenMesh,
+/// `Polyhedron_3`, ...) with one part label per face read from
+/// `face_labels` (a readable property map, face descriptor to integer).
+/// Vertices and faces are numbered in `vertices(g)` and `faces(g)` order.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `g`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, g)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
+Morphable_part_model learn_morphable_part_model(const FaceGraph& g, FaceLabelMap face_labels,
+                                                const Annotation& annotation,
+                                                const NamedParameters& np = parameters::default_values(),
+                                                const Learning_options& options = Learning_options())
+{
+  Labeled_mesh mesh;
+  mesh.mesh = to_indexed_mesh(g, np);
+  mesh.face_labels = face_labels_from_map(g, face_labels);
+  mesh.source = "face graph";
+  return learn_morphable_part_model(mesh, annotation, options);
+}
 
 } // namespace MPM
 } // namespace CGAL
