@@ -6,6 +6,7 @@
 #include "cli.h"
 
 #include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Synthetic_model.h>
 
@@ -30,10 +31,14 @@ int run_synth(const Args& args, Context& context)
   using namespace CGAL::MPM;
   const std::string name = args.positionals().front();
   Synthetic_family family{};
-  bool known = false;
-  for(Synthetic_family f : all_synthetic_families())
-    if(family_name(f) == name) { family = f; known = true; }
-  if(!known) throw Usage_error("unknown family '" + name + "' (one of: " + family_list() + ")");
+  try
+  {
+    family = parse_family(name);
+  }
+  catch(const Input_error& e) // a wrong word on the command line: a usage error
+  {
+    throw Usage_error(e.what());
+  }
   if(!args.has("output")) throw Usage_error("'mpm synth' needs -o PREFIX");
   const std::string prefix = args.text("output");
 

@@ -100,9 +100,7 @@ int dispatch(const std::vector<std::string>& argv)
   const mpm::Args args = mpm::parse_arguments(command, rest);
   mpm::Progress progress(command.name, args.flag("progress"));
   mpm::Context context{command.name, args.flag("json"), progress};
-  const int code = command.run(args, context);
-  progress.done();
-  return code;
+  return command.run(args, context);
 }
 
 } // namespace
