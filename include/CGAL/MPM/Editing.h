@@ -1,0 +1,56 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_EDITING_H
+#define CGAL_MPM_EDITING_H
+
+#include <CGAL/MPM/Embedding_problem.h>
+#include <CGAL/MPM/Morphable_part_model.h>
+
+#include <Eigen/Core>
+
+#include <map>
+#include <string>
+
+namespace CGAL {
+namespace MPM {
+
+/// \ingroup PkgMPMRef
+/// Free-form deformation of training example `example`: every cluster (part
+/// instance and pair geometry) keeps its learned modes and deviations, but
+/// its target shape at zero coordinates is the instance's own rest shape
+/// ("exchange the means"), so the input is the energy's minimum and handles
+/// pull within the learned space. Throws `Input_error` for an example index
+/// out of range.
+Embedding_problem make_deformation_problem(const Morphable_part_model& model, int example = 0);
+
+/// \ingroup PkgMPMRef
+/// Options of partial symmetrization.
+struct Symmetrization_options
+{
+  /// Isotropic standard deviation of every mode, relative to the type's
+  /// largest learned one: small values pull all instances to the same shape.
+  double relative_sigma = 0.01;
+  /// Per part type name, the point of its subspace all instances move to
+  /// (its coordinates); types not listed use their mean.
+  std::map<std::string, Eigen::VectorXd> type_coordinates;
+};
+
+/// \ingroup PkgMPMRef
+/// Partial symmetrization of example `example`: every instance of a type
+/// (and every pair geometry of a rule) is attracted to the same shape, the
+/// type's mean or a user-chosen point of its subspace, with a small
+/// isotropic variance. The global structure (placement of parts) is kept.
+Embedding_problem make_symmetrization_problem(const Morphable_part_model& model, int example = 0,
+                                              const Symmetrization_options& options = Symmetrization_options());
+
+/// \ingroup PkgMPMRef
+/// Caricature (factor > 1) or anti-shape (factor < 0) of example `example`:
+/// each instance's coordinates are scaled away from its type's mean by
+/// `factor` (within the subspace); the part of its shape outside the
+/// subspace is kept. Factor 1 is the deformation problem itself.
+Embedding_problem make_caricature_problem(const Morphable_part_model& model, double factor, int example = 0);
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif

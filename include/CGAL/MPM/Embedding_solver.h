@@ -1,0 +1,119 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_EMBEDDING_SOLVER_H
+#define CGAL_MPM_EMBEDDING_SOLVER_H
+
+#include <CGAL/MPM/Embedding_problem.h>
+#include <CGAL/MPM/Indexed_mesh.h>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+
+/// \ingroup PkgMPMRef
+/// The sparse factorization behind the constant vertex block.
+enum class Sparse_solver
+{
+  simplicial_ldlt, ///< `Eigen::SimplicialLDLT` through `CGAL::Eigen_solver_traits`
+  cholmod          ///< `Eigen::CholmodSupernodalLLT` (when built with CHOLMOD; else simplicial_ldlt)
+};
+
+/// \ingroup PkgMPMRef
+/// How the quadratic step in positions and shape coordinates is solved.
+enum class Global_step
+{
+  schur,  ///< prefactored vertex block, Schur complement in the coordinates (fast)
+  direct  ///< assemble and factor the whole system every iteration (the reference)
+};
+
+/// \ingroup PkgMPMRef
+/// Options of the embedding solver.
+struct Embedding_options
+{
+  Global_step global_step = Global_step::schur; ///< fast path or reference
+  Sparse_solver sparse_solver = Sparse_solver::simplicial_ldlt; ///< factorization
+  /// Handle stiffness relative to the mean diagonal of the elastic matrix.
+  double handle_weight = 100.;
+  /// Anchor stiffness of pieces without handles, relative likewise.
+  double anchor_weight = 1e-6;
+  int max_iterations = 100;  ///< iteration cap of `solve()`
+  double tolerance = 1e-8;   ///< stop when the energy decreases by less than this fraction
+};
+
+/// \ingroup PkgMPMRef
+/// What `Embedding_solver::solve()` did.
+struct Solve_report
+{
+  std::vector<double> energies; ///< energy after each iteration
+  int iterations = 0;           ///< iterations run
+  bool converged = false;       ///< stopped on the tolerance, not the cap
+  /// Final energy (the residual energy of the embedding).
+  double energy() const { return energies.empty() ? 0. : energies.back(); }
+};
+
+/// \ingroup PkgMPMRef
+/// Computes the embedding of a part graph: minimizes the elastic subspace
+/// energy of every cluster plus soft handle constraints over vertex
+/// positions, one rotation per cluster and the clusters' shape coordinates,
+/// by local/global alternation (fit rotations; solve the quadratic in
+/// positions and coordinates).
+///
+/// The vertex block is factored once per handle set; a change of handle
+/// targets costs no factorization. Numerical failures throw
+/// `Computation_error` naming the cluster at fault, leaving the previous
+/// state intact.
+class Embedding_solver
+{
+public:
+  /// Prepares the solver: weights, Laplacians, factorization without handles.
+  /// Throws `Input_error` for an inconsistent problem (naming the cluster).
+  explicit Embedding_solver(const Embedding_problem& problem, const Embedding_options& options = Embedding_options());
+  ~Embedding_solver();
+  /// Movable, not copyable.
+  Embedding_solver(Embedding_solver&&) noexcept;
+  /// Movable, not copyable.
+  Embedding_solver& operator=(Embedding_solver&&) noexcept;
+
+  /// Sets the handle vertices and their targets (k x 3). A new vertex set
+  /// refactors; the same vertices with new targets do not. Throws
+  /// `Input_error` for a vertex out of range, a duplicate vertex or a
+  /// non-finite target.
+  void set_handles(const std::vector<int>& vertices, const Point_matrix& targets);
+  /// Removes all handles.
+  void clear_handles();
+
+  /// Runs local/global iterations from the current state until the energy
+  /// decreases by less than `options.tolerance` (relative) or
+  /// `options.max_iterations` is reached.
+  Solve_report solve();
+  /// Runs exactly one local/global iteration; returns the energy after it.
+  double iterate();
+
+  /// Current vertex positions (n x 3).
+  const Point_matrix& positions() const;
+  /// Current shape coordinates of cluster `c`.
+  Eigen::VectorXd coordinates(int c) const;
+  /// Current rotation of cluster `c`.
+  const Eigen::Matrix3d& rotation(int c) const;
+  /// Energy of the current state.
+  double energy() const;
+  /// Energy of cluster `c` alone in the current state.
+  double cluster_energy(int c) const;
+  /// Restarts from the rest positions with zero coordinates.
+  void reset();
+  /// Number of clusters.
+  int number_of_clusters() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,656 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Shape_space.h>
+#include <CGAL/MPM/internal/Edge_graph_distance.h>
+
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Weights/utils.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/SVD>
+#include <Eigen/SparseCholesky>
+#ifdef CGAL_MPM_HAS_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace CGAL {
+namespace MPM {
+
+namespace {
+
+using Sparse = Eigen::SparseMatrix<double>;
+using Kernel = CGAL::Simple_cartesian<double>;
+
+// The constant vertex block is factored through CGAL's solver traits, so any
+// Eigen-compatible direct solver plugs in the same way.
+class Vertex_block_solver
+{
+public:
+  virtual ~Vertex_block_solver() = default;
+  virtual bool factor(const Sparse& a) = 0;
+  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) = 0;
+};
+
+template <class EigenSolver>
+class Traits_solver : public Vertex_block_solver
+{
+public:
+  bool factor(const Sparse& a) override
+  {
+    matrix_ = std::make_unique<typename Traits::Matrix>(a);
+    double d;
+    return traits_.factor(*matrix_, d);
+  }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) override { return traits_.solver().solve(b); }
+
+private:
+  using Traits = CGAL::Eigen_solver_traits<EigenSolver>;
+  Traits traits_;
+  std::unique_ptr<typename Traits::Matrix> matrix_;
+};
+
+std::unique_ptr<Vertex_block_solver> make_vertex_block_solver(Sparse_solver which)
+{
+#ifdef CGAL_MPM_HAS_CHOLMOD
+  if(which == Sparse_solver::cholmod)
+    return std::make_unique<Traits_solver<Eigen::CholmodSupernodalLLT<Sparse>>>();
+#else
+  (void)which;
+#endif
+  return std::make_unique<Traits_solver<Eigen::SimplicialLDLT<Sparse>>>();
+}
+
+// Closest rotation (no reflection) to a 3x3 matrix, maximizing <R, k>.
+Eigen::Matrix3d closest_rotation(const Eigen::Matrix3d& k)
+{
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(k, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  if((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0) d(2, 2) = -1;
+  return svd.matrixU() * d * svd.matrixV().transpose();
+}
+
+Kernel::Point_3 point(const Point_matrix& p, int i) { return Kernel::Point_3(p(i, 0), p(i, 1), p(i, 2)); }
+
+struct Weighted_edge
+{
+  int i, j;
+  double w;
+};
+
+struct Cluster_data
+{
+  std::string name;
+  std::vector<int> vertices;
+  std::vector<Weighted_edge> edges;   // weights include sigma_sub^-2 and the blend
+  Sparse laplacian;                   // local, n_c x n_c
+  Point_matrix mean;
+  std::vector<Point_matrix> modes;    // n_c x 3 each
+  Eigen::VectorXd prior;              // 1 / (4 sigma_k^2)
+  Point_matrix laplacian_mean;        // L M
+  std::vector<Point_matrix> laplacian_modes; // L B_k
+  int offset = 0;                     // of its coordinates in the stacked vector
+  int number_of_modes() const { return static_cast<int>(modes.size()); }
+};
+
+double trace_product(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a.array() * b.transpose().array()).sum(); }
+
+} // namespace
+
+struct Embedding_solver::Impl
+{
+  Embedding_options options;
+  Indexed_mesh mesh;
+  int n = 0;
+  std::vector<Cluster_data> clusters;
+  int total_modes = 0;
+  Sparse elastic;                 // sum of cluster Laplacians, n x n
+  double mean_diagonal = 1.;
+  std::vector<int> component;     // connected piece of each vertex (through cluster edges)
+
+  // Handles.
+  std::vector<int> handle_vertices;
+  Point_matrix handle_targets;
+  bool factored = false;
+  bool handle_terms_ready = false;
+  Eigen::VectorXd anchor;         // per-vertex anchor weight
+  Sparse system;                  // A11
+  std::unique_ptr<Vertex_block_solver> solver;
+
+  // Schur blocks, 3x3 each: H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d,
+  // Gz[ck] = (L_c B_ck)^T Z, with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
+  std::vector<Eigen::Matrix3d> h_blocks, g_blocks, z_blocks;
+  Eigen::MatrixXd s0;             // constant part of the Schur complement
+  Eigen::VectorXd r0;             // constant part of its right-hand side
+  Point_matrix b0;                // handle and anchor right-hand side
+  std::vector<int> cluster_of_mode;
+
+  // State.
+  Point_matrix positions;
+  Eigen::VectorXd coordinates;
+  std::vector<Eigen::Matrix3d> rotations;
+  int iterations_since_reset = 0;
+
+  Impl(const Embedding_problem& problem, const Embedding_options& o);
+  void prepare_cluster(const Cluster& c, double sigma_sub, int index);
+  void compute_anchor();
+  void factor();
+  void prepare_handle_terms();
+  Eigen::MatrixXd scatter(const Cluster_data& c, const Point_matrix& local) const;
+  Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
+  Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
+  void local_step();
+  void global_step_schur(Point_matrix& v, Eigen::VectorXd& lambda);
+  void global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda);
+  double energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only = -1) const;
+  void check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
+};
+
+Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_options& o)
+  : options(o), mesh(problem.mesh), n(problem.mesh.number_of_vertices())
+{
+  if(!(problem.sigma_sub > 0) || !std::isfinite(problem.sigma_sub))
+    throw Input_error("embedding problem", "sigma_sub", "must be positive and finite");
+  if(!problem.mesh.points.allFinite())
+    throw Input_error("embedding problem", "rest positions", "contain non-finite coordinates");
+  for(std::size_t c = 0; c < problem.clusters.size(); ++c)
+    prepare_cluster(problem.clusters[c], problem.sigma_sub, static_cast<int>(c));
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.laplacian.outerSize(); ++k)
+      for(Sparse::InnerIterator it(c.laplacian, k); it; ++it)
+        triplets.emplace_back(c.vertices[it.row()], c.vertices[it.col()], it.value());
+  elastic.resize(n, n);
+  elastic.setFromTriplets(triplets.begin(), triplets.end());
+  double sum = 0.;
+  int count = 0;
+  for(int i = 0; i < n; ++i)
+    if(elastic.coeff(i, i) > 0)
+    {
+      sum += elastic.coeff(i, i);
+      ++count;
+    }
+  mean_diagonal = count > 0 ? sum / count : 1.;
+
+  std::vector<int> rank(n), parent(n);
+  boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
+  for(int v = 0; v < n; ++v) sets.make_set(v);
+  for(const Cluster_data& c : clusters)
+    for(const Weighted_edge& e : c.edges) sets.union_set(c.vertices[e.i], c.vertices[e.j]);
+  component.resize(n);
+  for(int v = 0; v < n; ++v) component[v] = sets.find_set(v);
+
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k) cluster_of_mode.push_back(static_cast<int>(&c - clusters.data()));
+
+  positions = mesh.points;
+  coordinates = Eigen::VectorXd::Zero(total_modes);
+  rotations.assign(clusters.size(), Eigen::Matrix3d::Identity());
+  compute_anchor();
+  local_step();
+}
+
+void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub, int index)
+{
+  const std::string name = c.name.empty() ? "cluster " + std::to_string(index) : c.name;
+  const int nc = static_cast<int>(c.vertices.size());
+  const auto fail = [&](const std::string& what) { throw Input_error("embedding problem", name, what); };
+  if(c.mean.rows() != nc) fail("mean has " + std::to_string(c.mean.rows()) + " points for " + std::to_string(nc) + " vertices");
+  if(!c.mean.allFinite()) fail("mean has non-finite coordinates");
+  if(c.modes.rows() != 3 * nc && c.modes.cols() > 0) fail("modes have the wrong size");
+  if(c.sigmas.size() != c.modes.cols()) fail("one standard deviation per mode is needed");
+  for(int k = 0; k < c.sigmas.size(); ++k)
+    if(!(c.sigmas[k] > 0) || !std::isfinite(c.sigmas[k])) fail("standard deviation " + std::to_string(k) + " is not positive");
+  for(int v : c.vertices)
+    if(v < 0 || v >= n) fail("vertex " + std::to_string(v) + " is out of range");
+  for(const Cluster_edge& e : c.edges)
+    if(e.source < 0 || e.source >= nc || e.target < 0 || e.target >= nc || e.source == e.target)
+      fail("edge (" + std::to_string(e.source) + ", " + std::to_string(e.target) + ") is invalid");
+  for(const Triangle& t : c.triangles)
+    for(int k = 0; k < 3; ++k)
+      if(t[k] < 0 || t[k] >= nc) fail("triangle corner out of range");
+
+  Cluster_data d;
+  d.name = name;
+  d.vertices = c.vertices;
+  d.mean = c.mean;
+
+  // Cotangent weights measured on the mean: half the cotangent of the
+  // opposite angle per adjacent triangle. Negative ones are clamped (to a
+  // small fraction of the mean weight) so that the matrix stays positive
+  // definite and no edge is left without stiffness.
+  std::map<std::pair<int, int>, double> cotangent;
+  for(const Triangle& t : c.triangles)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3], o = t[(k + 2) % 3];
+      const double cot = CGAL::Weights::cotangent(point(c.mean, a), point(c.mean, o), point(c.mean, b));
+      cotangent[{std::min(a, b), std::max(a, b)}] += std::isfinite(cot) ? 0.5 * cot : 0.;
+    }
+  double positive_sum = 0.;
+  int positive_count = 0;
+  for(const auto& [e, w] : cotangent)
+    if(w > 0)
+    {
+      positive_sum += w;
+      ++positive_count;
+    }
+  const double floor_weight = 1e-2 * (positive_count > 0 ? positive_sum / positive_count : 1.);
+
+  std::vector<double> blend(nc, 1.);
+  if(!c.border.empty())
+  {
+    double sigma_bound = c.sigma_bound;
+    if(!(sigma_bound > 0))
+      sigma_bound = (c.mean.colwise().maxCoeff() - c.mean.colwise().minCoeff()).norm() / 3.;
+    const std::vector<double> distance = internal::edge_graph_distances(c.mean, c.edges, c.border);
+    for(int v = 0; v < nc; ++v)
+      blend[v] = std::isfinite(distance[v]) ? 1. - std::exp(-distance[v] * distance[v] / (sigma_bound * sigma_bound)) : 1.;
+  }
+  const double inverse_variance = 1. / (sigma_sub * sigma_sub);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for(const Cluster_edge& e : c.edges)
+  {
+    double w = 1.; // uniform on virtual and non-manifold edges
+    const auto it = cotangent.find({std::min(e.source, e.target), std::max(e.source, e.target)});
+    if(!e.is_virtual && it != cotangent.end()) w = std::max(it->second, floor_weight);
+    // The blend fades a cluster toward its border, but never to exactly zero.
+    w *= std::max(0.5 * (blend[e.source] + blend[e.target]), 1e-3) * inverse_variance;
+    d.edges.push_back({e.source, e.target, w});
+    triplets.emplace_back(e.source, e.source, w);
+    triplets.emplace_back(e.target, e.target, w);
+    triplets.emplace_back(e.source, e.target, -w);
+    triplets.emplace_back(e.target, e.source, -w);
+  }
+  d.laplacian.resize(nc, nc);
+  d.laplacian.setFromTriplets(triplets.begin(), triplets.end());
+  d.laplacian_mean = d.laplacian * d.mean;
+  for(int k = 0; k < c.modes.cols(); ++k)
+  {
+    Point_matrix b(nc, 3);
+    for(int i = 0; i < nc; ++i) b.row(i) = c.modes.col(k).segment<3>(3 * i).transpose();
+    d.laplacian_modes.push_back(d.laplacian * b);
+    d.modes.push_back(std::move(b));
+  }
+  d.prior = (0.25 * c.sigmas.array().square().inverse()).matrix();
+  d.offset = total_modes;
+  total_modes += c.modes.cols();
+  clusters.push_back(std::move(d));
+}
+
+Eigen::MatrixXd Embedding_solver::Impl::scatter(const Cluster_data& c, const Point_matrix& local) const
+{
+  Eigen::MatrixXd global = Eigen::MatrixXd::Zero(n, 3);
+  for(std::size_t i = 0; i < c.vertices.size(); ++i) global.row(c.vertices[i]) += local.row(i);
+  return global;
+}
+
+Eigen::MatrixXd Embedding_solver::Impl::gather(const Cluster_data& c, const Eigen::MatrixXd& global) const
+{
+  Eigen::MatrixXd local(c.vertices.size(), global.cols());
+  for(std::size_t i = 0; i < c.vertices.size(); ++i) local.row(i) = global.row(c.vertices[i]);
+  return local;
+}
+
+Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const
+{
+  Point_matrix m = c.mean;
+  for(int k = 0; k < c.number_of_modes(); ++k) m += lambda[c.offset + k] * c.modes[k];
+  return m;
+}
+
+// Pieces no handle reaches are anchored weakly to the rest positions: the
+// energy is blind to their translation and rotation.
+void Embedding_solver::Impl::compute_anchor()
+{
+  std::vector<bool> held(n, false);
+  for(int v : handle_vertices) held[component[v]] = true;
+  anchor = Eigen::VectorXd::Zero(n);
+  for(int v = 0; v < n; ++v)
+    if(!held[component[v]]) anchor[v] = options.anchor_weight * mean_diagonal;
+}
+
+void Embedding_solver::Impl::factor()
+{
+  const double handle_weight = options.handle_weight * mean_diagonal;
+
+  system = elastic;
+  for(int v = 0; v < n; ++v) system.coeffRef(v, v) += anchor[v];
+  for(int v : handle_vertices) system.coeffRef(v, v) += handle_weight;
+  system.makeCompressed();
+  solver = make_vertex_block_solver(options.sparse_solver);
+  if(!solver->factor(system))
+    throw Computation_error("embedding: factorization of the vertex block failed (a cluster may be degenerate)");
+  factored = true;
+  handle_terms_ready = false;
+
+  if(options.global_step != Global_step::schur) return;
+  const int dm = total_modes, nc = static_cast<int>(clusters.size());
+  s0 = Eigen::MatrixXd::Zero(dm, dm);
+  r0 = Eigen::VectorXd::Zero(dm);
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k)
+    {
+      for(int l = 0; l < c.number_of_modes(); ++l)
+        s0(c.offset + k, c.offset + l) = (c.modes[k].array() * c.laplacian_modes[l].array()).sum();
+      s0(c.offset + k, c.offset + k) += c.prior[k];
+      r0[c.offset + k] = -(c.modes[k].array() * c.laplacian_mean.array()).sum();
+    }
+  h_blocks.assign(std::size_t(dm) * dm, Eigen::Matrix3d::Zero());
+  g_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
+  // Right-hand sides are solved in batches to bound memory on large models.
+  const int columns = dm + nc;
+  const int batch = 16;
+  for(int first = 0; first < columns; first += batch)
+  {
+    const int count = std::min(batch, columns - first);
+    Eigen::MatrixXd rhs(n, 3 * count);
+    for(int j = 0; j < count; ++j)
+    {
+      const int column = first + j;
+      if(column < dm)
+      {
+        const Cluster_data& d = clusters[cluster_of_mode[column]];
+        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset]);
+      }
+      else
+        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean);
+    }
+    const Eigen::MatrixXd solved = solver->solve(rhs);
+    for(const Cluster_data& c : clusters)
+    {
+      const Eigen::MatrixXd local = gather(c, solved);
+      for(int k = 0; k < c.number_of_modes(); ++k)
+        for(int j = 0; j < count; ++j)
+        {
+          const int column = first + j;
+          const Eigen::Matrix3d block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
+          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = block;
+          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = block;
+        }
+    }
+  }
+}
+
+void Embedding_solver::Impl::prepare_handle_terms()
+{
+  if(!factored) factor();
+  b0 = Point_matrix::Zero(n, 3);
+  for(int v = 0; v < n; ++v)
+    if(anchor[v] > 0) b0.row(v) = anchor[v] * mesh.points.row(v);
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    b0.row(handle_vertices[h]) += handle_weight * handle_targets.row(h);
+  if(options.global_step == Global_step::schur && total_modes > 0)
+  {
+    const Eigen::MatrixXd z = solver->solve(b0);
+    z_blocks.assign(total_modes, Eigen::Matrix3d::Zero());
+    for(const Cluster_data& c : clusters)
+    {
+      const Eigen::MatrixXd local = gather(c, z);
+      for(int k = 0; k < c.number_of_modes(); ++k)
+        z_blocks[c.offset + k] = c.laplacian_modes[k].transpose() * local;
+    }
+  }
+  handle_terms_ready = true;
+}
+
+void Embedding_solver::Impl::local_step()
+{
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    Point_matrix lm = d.laplacian_mean;
+    for(int k = 0; k < d.number_of_modes(); ++k) lm += coordinates[d.offset + k] * d.laplacian_modes[k];
+    const Eigen::Matrix3d covariance = gather(d, positions).transpose() * lm;
+    rotations[c] = closest_rotation(covariance);
+  }
+}
+
+void Embedding_solver::Impl::global_step_schur(Point_matrix& v, Eigen::VectorXd& lambda)
+{
+  const int dm = total_modes, nc = static_cast<int>(clusters.size());
+  lambda = Eigen::VectorXd::Zero(dm);
+  if(dm > 0)
+  {
+    // R_d^T R_c for every pair of clusters that carry modes or are referenced.
+    Eigen::MatrixXd s = s0;
+    Eigen::VectorXd r = r0;
+    for(int a = 0; a < dm; ++a)
+    {
+      const int c = cluster_of_mode[a];
+      for(int b = 0; b < dm; ++b)
+      {
+        const int d = cluster_of_mode[b];
+        s(a, b) -= trace_product(h_blocks[std::size_t(a) * dm + b], rotations[d].transpose() * rotations[c]);
+      }
+      for(int d = 0; d < nc; ++d)
+        r[a] += trace_product(g_blocks[std::size_t(a) * nc + d], rotations[d].transpose() * rotations[c]);
+      r[a] += trace_product(z_blocks[a], rotations[c]);
+    }
+    s = 0.5 * (s + s.transpose());
+    Eigen::LLT<Eigen::MatrixXd> llt(s);
+    if(llt.info() != Eigen::Success)
+      throw Computation_error("embedding: the shape-coordinate system is not positive definite");
+    lambda = llt.solve(r);
+  }
+  Eigen::MatrixXd rhs = b0;
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    Point_matrix lm = d.laplacian_mean;
+    for(int k = 0; k < d.number_of_modes(); ++k) lm += lambda[d.offset + k] * d.laplacian_modes[k];
+    const Eigen::MatrixXd rotated = lm * rotations[c].transpose();
+    for(std::size_t i = 0; i < d.vertices.size(); ++i) rhs.row(d.vertices[i]) += rotated.row(i);
+  }
+  v = solver->solve(rhs);
+}
+
+// The reference: the whole quadratic in (x, y, z, lambda) assembled and
+// factored afresh. Slow, simple, and what the Schur path must agree with.
+void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda)
+{
+  const int dm = total_modes, size = 3 * n + dm;
+  std::vector<Eigen::Triplet<double>> t;
+  for(int a = 0; a < 3; ++a)
+    for(int k = 0; k < system.outerSize(); ++k)
+      for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * n + it.row(), a * n + it.col(), it.value());
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
+  for(int a = 0; a < 3; ++a) rhs.segment(a * n, n) = b0.col(a);
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    const Eigen::MatrixXd rotated_mean = d.laplacian_mean * rotations[c].transpose();
+    for(std::size_t i = 0; i < d.vertices.size(); ++i)
+      for(int a = 0; a < 3; ++a) rhs[a * n + d.vertices[i]] += rotated_mean(i, a);
+    for(int k = 0; k < d.number_of_modes(); ++k)
+    {
+      const int row = 3 * n + d.offset + k;
+      const Eigen::MatrixXd coupling = d.laplacian_modes[k] * rotations[c].transpose();
+      for(std::size_t i = 0; i < d.vertices.size(); ++i)
+        for(int a = 0; a < 3; ++a)
+          if(coupling(i, a) != 0.)
+          {
+            t.emplace_back(row, a * n + d.vertices[i], -coupling(i, a));
+            t.emplace_back(a * n + d.vertices[i], row, -coupling(i, a));
+          }
+      for(int l = 0; l < d.number_of_modes(); ++l)
+        t.emplace_back(row, 3 * n + d.offset + l, (d.modes[k].array() * d.laplacian_modes[l].array()).sum());
+      t.emplace_back(row, row, d.prior[k]);
+      rhs[row] = -(d.modes[k].array() * d.laplacian_mean.array()).sum();
+    }
+  }
+  Sparse k(size, size);
+  k.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Sparse> ldlt(k);
+  if(ldlt.info() != Eigen::Success)
+    throw Computation_error("embedding: factorization of the full system failed");
+  const Eigen::VectorXd x = ldlt.solve(rhs);
+  v.resize(n, 3);
+  for(int a = 0; a < 3; ++a) v.col(a) = x.segment(a * n, n);
+  lambda = x.tail(dm);
+}
+
+double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only) const
+{
+  double e = 0.;
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    if(only >= 0 && int(c) != only) continue;
+    const Cluster_data& d = clusters[c];
+    const Point_matrix m = target_shape(d, lambda) * rotations[c].transpose();
+    for(const Weighted_edge& edge : d.edges)
+      e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])) - (m.row(edge.i) - m.row(edge.j))).squaredNorm();
+    for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
+  }
+  if(only >= 0) return e;
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    e += handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm();
+  for(int i = 0; i < n; ++i)
+    if(anchor[i] > 0) e += anchor[i] * (v.row(i) - mesh.points.row(i)).squaredNorm();
+  return e;
+}
+
+void Embedding_solver::Impl::check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const
+{
+  if(v.allFinite() && lambda.allFinite()) return;
+  for(const Cluster_data& c : clusters)
+  {
+    bool bad = !lambda.segment(c.offset, c.number_of_modes()).allFinite();
+    for(int i : c.vertices) bad = bad || !v.row(i).allFinite();
+    if(bad) throw Computation_error("embedding: non-finite result in " + c.name + "; the previous state is kept");
+  }
+  throw Computation_error("embedding: non-finite result; the previous state is kept");
+}
+
+Embedding_solver::Embedding_solver(const Embedding_problem& problem, const Embedding_options& options)
+  : impl_(std::make_unique<Impl>(problem, options))
+{}
+
+Embedding_solver::~Embedding_solver() = default;
+Embedding_solver::Embedding_solver(Embedding_solver&&) noexcept = default;
+Embedding_solver& Embedding_solver::operator=(Embedding_solver&&) noexcept = default;
+
+void Embedding_solver::set_handles(const std::vector<int>& vertices, const Point_matrix& targets)
+{
+  Impl& d = *impl_;
+  if(targets.rows() != static_cast<Eigen::Index>(vertices.size()))
+    throw Input_error("handles", "", std::to_string(vertices.size()) + " vertices but " +
+                                       std::to_string(targets.rows()) + " targets");
+  std::vector<bool> seen(d.n, false);
+  for(std::size_t h = 0; h < vertices.size(); ++h)
+  {
+    const std::string element = "handle " + std::to_string(h);
+    if(vertices[h] < 0 || vertices[h] >= d.n)
+      throw Input_error("handles", element, "vertex " + std::to_string(vertices[h]) + " does not exist (the mesh has " +
+                                              std::to_string(d.n) + " vertices)");
+    if(seen[vertices[h]]) throw Input_error("handles", element, "vertex " + std::to_string(vertices[h]) + " has two handles");
+    seen[vertices[h]] = true;
+    if(!targets.row(h).allFinite()) throw Input_error("handles", element, "target is not finite");
+  }
+  if(vertices != d.handle_vertices) d.factored = false;
+  d.handle_vertices = vertices;
+  d.handle_targets = targets;
+  d.handle_terms_ready = false;
+  d.compute_anchor();
+}
+
+void Embedding_solver::clear_handles() { set_handles({}, Point_matrix(0, 3)); }
+
+double Embedding_solver::iterate()
+{
+  Impl& d = *impl_;
+  if(!d.handle_terms_ready) d.prepare_handle_terms();
+  const std::vector<Eigen::Matrix3d> previous_rotations = d.rotations;
+  d.local_step();
+  Point_matrix v;
+  Eigen::VectorXd lambda;
+  try
+  {
+    if(d.options.global_step == Global_step::schur) d.global_step_schur(v, lambda);
+    else d.global_step_direct(v, lambda);
+    d.check_finite(v, lambda);
+  }
+  catch(...)
+  {
+    d.rotations = previous_rotations;
+    throw;
+  }
+  d.positions = std::move(v);
+  d.coordinates = std::move(lambda);
+  ++d.iterations_since_reset;
+  return d.energy_of(d.positions, d.coordinates);
+}
+
+Solve_report Embedding_solver::solve()
+{
+  Impl& d = *impl_;
+  if(!d.handle_terms_ready) d.prepare_handle_terms();
+  // From the rest state, start at the best rigid placement of the handles
+  // when it fits them better: a rigid edit is then solved at once.
+  if(d.iterations_since_reset == 0 && d.handle_vertices.size() >= 3)
+  {
+    Point_matrix rest(d.handle_vertices.size(), 3);
+    for(std::size_t h = 0; h < d.handle_vertices.size(); ++h) rest.row(h) = d.mesh.points.row(d.handle_vertices[h]);
+    const Rigid_motion motion = fit_rigid_motion(rest, d.handle_targets);
+    if((motion.apply(rest) - d.handle_targets).squaredNorm() < (rest - d.handle_targets).squaredNorm())
+    {
+      d.positions = motion.apply(d.mesh.points);
+      d.local_step();
+    }
+  }
+  Solve_report report;
+  double previous = d.energy_of(d.positions, d.coordinates);
+  for(int it = 0; it < d.options.max_iterations; ++it)
+  {
+    const double e = iterate();
+    report.energies.push_back(e);
+    ++report.iterations;
+    if(previous - e <= d.options.tolerance * std::max(previous, std::numeric_limits<double>::min()))
+    {
+      report.converged = true;
+      break;
+    }
+    previous = e;
+  }
+  return report;
+}
+
+const Point_matrix& Embedding_solver::positions() const { return impl_->positions; }
+
+Eigen::VectorXd Embedding_solver::coordinates(int c) const
+{
+  const Cluster_data& d = impl_->clusters.at(c);
+  return impl_->coordinates.segment(d.offset, d.number_of_modes());
+}
+
+const Eigen::Matrix3d& Embedding_solver::rotation(int c) const { return impl_->rotations.at(c); }
+
+double Embedding_solver::energy() const { return impl_->energy_of(impl_->positions, impl_->coordinates); }
+
+double Embedding_solver::cluster_energy(int c) const { return impl_->energy_of(impl_->positions, impl_->coordinates, c); }
+
+void Embedding_solver::reset()
+{
+  Impl& d = *impl_;
+  d.positions = d.mesh.points;
+  d.coordinates.setZero();
+  d.iterations_since_reset = 0;
+  d.local_step();
+}
+
+int Embedding_solver::number_of_clusters() const { return static_cast<int>(impl_->clusters.size()); }
+
+} // namespace MPM
+} // namespace CGAL

@@ -1,0 +1,174 @@
+#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <map>
+
+using namespace CGAL::MPM;
+
+namespace {
+
+struct Learned
+{
+  Synthetic_model truth;
+  Morphable_part_model model;
+};
+
+const Learned& learned(Synthetic_family family)
+{
+  static std::map<Synthetic_family, Learned> cache;
+  auto it = cache.find(family);
+  if(it == cache.end())
+  {
+    Synthetic_options o;
+    o.vertices = 3000;
+    Learned l;
+    l.truth = make_synthetic_model(family, o);
+    l.model = learn_morphable_part_model(l.truth.mesh, l.truth.annotation);
+    it = cache.emplace(family, std::move(l)).first;
+  }
+  return it->second;
+}
+
+// One handle per part: the part vertex nearest to its centroid.
+std::vector<int> handle_per_part(const Synthetic_model& s)
+{
+  std::vector<int> handles;
+  for(const Synthetic_instance& i : s.instances)
+  {
+    Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
+    for(int v : i.vertices) centroid += s.mesh.mesh.points.row(v);
+    centroid /= double(i.vertices.size());
+    int best = i.vertices.front();
+    for(int v : i.vertices)
+      if((s.mesh.mesh.points.row(v) - centroid).norm() < (s.mesh.mesh.points.row(best) - centroid).norm()) best = v;
+    if(std::find(handles.begin(), handles.end(), best) == handles.end()) handles.push_back(best);
+  }
+  return handles;
+}
+
+Point_matrix rows(const Point_matrix& p, const std::vector<int>& vertices)
+{
+  Point_matrix r(vertices.size(), 3);
+  for(std::size_t i = 0; i < vertices.size(); ++i) r.row(i) = p.row(vertices[i]);
+  return r;
+}
+
+double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
+
+class Solver_on_family : public ::testing::TestWithParam<Synthetic_family>
+{};
+
+} // namespace
+
+TEST_P(Solver_on_family, schur_agrees_with_direct_every_iteration)
+{
+  const Learned& l = learned(GetParam());
+  const Embedding_problem problem = make_deformation_problem(l.model);
+  Embedding_options fast, reference;
+  reference.global_step = Global_step::direct;
+  Embedding_solver a(problem, fast), b(problem, reference);
+  const std::vector<int> handles = handle_per_part(l.truth);
+  const Point_matrix targets = rows(l.truth.draw_pose(7), handles);
+  a.set_handles(handles, targets);
+  b.set_handles(handles, targets);
+  for(int it = 0; it < 5; ++it)
+  {
+    const double ea = a.iterate(), eb = b.iterate();
+    EXPECT_NEAR(ea, eb, 1e-8 * std::abs(eb)) << "iteration " << it;
+    EXPECT_LT((a.positions() - b.positions()).norm(), 1e-8 * b.positions().norm()) << "iteration " << it;
+    for(int c = 0; c < a.number_of_clusters(); ++c)
+      EXPECT_LT((a.coordinates(c) - b.coordinates(c)).norm(), 1e-7 * (1. + b.coordinates(c).norm()));
+  }
+}
+
+TEST_P(Solver_on_family, rest_state_is_the_minimum)
+{
+  const Learned& l = learned(GetParam());
+  Embedding_solver solver(make_deformation_problem(l.model));
+  const std::vector<int> handles = handle_per_part(l.truth);
+  solver.set_handles(handles, rows(l.truth.mesh.mesh.points, handles));
+  const Solve_report report = solver.solve();
+  const Point_matrix& rest = l.truth.mesh.mesh.points;
+  EXPECT_LT((solver.positions() - rest).norm(), 1e-9 * rest.norm());
+  EXPECT_LT(report.energy(), 1e-12 * rest.squaredNorm());
+}
+
+TEST_P(Solver_on_family, rigid_motion_of_all_handles_moves_the_input_rigidly)
+{
+  const Learned& l = learned(GetParam());
+  Embedding_solver solver(make_deformation_problem(l.model));
+  const std::vector<int> handles = handle_per_part(l.truth);
+  Rigid_motion m;
+  m.rotation = Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  m.translation = Eigen::Vector3d(0.5, -2, 1);
+  const Point_matrix moved = m.apply(l.truth.mesh.mesh.points);
+  solver.set_handles(handles, rows(moved, handles));
+  solver.solve();
+  EXPECT_LT((solver.positions() - moved).norm(), 1e-8 * moved.norm());
+}
+
+TEST_P(Solver_on_family, caricature_factor_one_is_the_input)
+{
+  const Learned& l = learned(GetParam());
+  Embedding_solver solver(make_caricature_problem(l.model, 1.));
+  solver.solve();
+  EXPECT_LT((solver.positions() - l.truth.mesh.mesh.points).norm(), 1e-9 * l.truth.mesh.mesh.points.norm());
+}
+
+INSTANTIATE_TEST_SUITE_P(All, Solver_on_family, ::testing::ValuesIn(all_synthetic_families()),
+                         [](const ::testing::TestParamInfo<Synthetic_family>& info) {
+                           std::string name = family_name(info.param);
+                           for(char& c : name)
+                             if(c == '-') c = '_';
+                           return name;
+                         });
+
+TEST(Embedding_solver, held_out_pose_from_handles_beats_the_rest_pose)
+{
+  const Learned& l = learned(Synthetic_family::hand);
+  Embedding_solver solver(make_deformation_problem(l.model));
+  const std::vector<int> handles = handle_per_part(l.truth);
+  const Point_matrix pose = l.truth.draw_pose(3);
+  solver.set_handles(handles, rows(pose, handles));
+  const Solve_report report = solver.solve();
+  const double d = diagonal(pose);
+  const double rest_error = (l.truth.mesh.mesh.points - pose).norm() / std::sqrt(double(pose.rows())) / d;
+  const double error = (solver.positions() - pose).norm() / std::sqrt(double(pose.rows())) / d;
+  std::cout << "hand: rest RMS " << rest_error << ", MPM RMS " << error << " after " << report.iterations << " iterations\n";
+  EXPECT_LT(error, 0.5 * rest_error);
+  // Energies never increase.
+  for(std::size_t i = 1; i < report.energies.size(); ++i)
+    EXPECT_LE(report.energies[i], report.energies[i - 1] * (1 + 1e-9));
+}
+
+TEST(Embedding_solver, rejects_bad_handles)
+{
+  const Learned& l = learned(Synthetic_family::hexa_grid);
+  Embedding_solver solver(make_deformation_problem(l.model));
+  const int n = l.truth.mesh.mesh.number_of_vertices();
+  Point_matrix one = Point_matrix::Zero(1, 3);
+  try
+  {
+    solver.set_handles({n + 5}, one);
+    FAIL();
+  }
+  catch(const Input_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos);
+  }
+  Point_matrix nan = one;
+  nan(0, 1) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(solver.set_handles({3}, nan), Input_error);
+  EXPECT_THROW(solver.set_handles({3, 3}, Point_matrix::Zero(2, 3)), Input_error);
+  // The solver still works after rejected input.
+  solver.set_handles({3}, rows(l.truth.mesh.mesh.points, {3}));
+  solver.solve();
+  EXPECT_TRUE(solver.positions().allFinite());
+}
