@@ -87,9 +87,23 @@ Model_parameters resolve_parameters(const Training_input& first)
   if(p.modes < 0)
     throw Input_error(source, "parameters", "modes must not be negative");
   const double diagonal = bounding_box_diagonal(first.mesh.mesh.points);
-  if(p.sigma_sub < 0) p.sigma_sub = 0.02 * diagonal;
   if(p.docking_radius < 0) p.docking_radius = 0.05 * diagonal;
   return p;
+}
+
+// Leaving the subspace must cost more than moving within it, at every mesh
+// resolution: half the typical per-vertex deviation of the types' strongest
+// modes (the median over types) does that; 0.2% of the bounding-box diagonal
+// when no type varies.
+double automatic_sigma_sub(const Morphable_part_model& model, const Training_input& first)
+{
+  std::vector<double> per_vertex;
+  for(const Part_type& t : model.types)
+    if(t.space.number_of_modes() > 0)
+      per_vertex.push_back(t.space.sigmas[0] / std::sqrt(double(t.number_of_vertices)));
+  if(per_vertex.empty()) return 0.002 * bounding_box_diagonal(first.mesh.mesh.points);
+  std::nth_element(per_vertex.begin(), per_vertex.begin() + per_vertex.size() / 2, per_vertex.end());
+  return 0.5 * per_vertex[per_vertex.size() / 2];
 }
 
 // Local numbering by first appearance in the part's faces (the known
@@ -519,6 +533,8 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
     for(int p : instances_of_type[t]) instances.push_back(instance_points(parts[p], inputs[parts[p].example].mesh.mesh));
     model.types[t].space = learn_shape_space(instances, space_options(model.types[t].name));
   }
+
+  if(model.parameters.sigma_sub < 0) model.parameters.sigma_sub = automatic_sigma_sub(model, inputs.front());
 
   std::vector<int> instance_in_rule(observations.size(), -1);
   for(std::size_t r = 0; r < model.rules.size(); ++r)

@@ -15,9 +15,13 @@ namespace MPM {
 /// automatically" as documented per field.
 struct Model_parameters
 {
-  /// Flexibility outside the learned subspace (paper: 3 to 10), in units of
-  /// the model's length. Negative: 2% of the bounding-box diagonal of the
-  /// first example.
+  /// Flexibility outside the learned subspace, in units of the model's
+  /// length: deviations of edge vectors from the subspace are weighted by
+  /// sigma_sub^-2. Negative: half the median, over part types with modes,
+  /// of the per-vertex standard deviation of the strongest mode
+  /// (sigma_1 / sqrt(vertices)), so that leaving the subspace costs more than
+  /// moving within it at any mesh resolution; 0.2% of the bounding-box
+  /// diagonal when no type varies.
   double sigma_sub = -1.;
   /// Width of the blending region at part borders. Negative: a third of
   /// each cluster's diameter.
