@@ -3,6 +3,8 @@
 #include <CGAL/MPM/Editing.h>
 #include <CGAL/MPM/Input_error.h>
 
+#include <Eigen/SVD>
+
 #include <functional>
 #include <set>
 
@@ -41,7 +43,43 @@ Point_matrix mode_displacement(const Shape_space& space, const Eigen::VectorXd& 
   return space.shape(coordinates) - space.mean;
 }
 
-Embedding_problem make_problem(const Morphable_part_model& model, int example, const Target_policy& policy)
+// The pair geometry of two parts' targets. The second part is placed on the
+// first by their shared seam (boundary docking); a seam too thin to fix a
+// rotation (collinear, as a straight tile side) only fixes the translation
+// and the second part keeps its rest orientation. Without a seam (generalized
+// docking) both keep their rest placement. The result is expressed in the
+// pair space's frame.
+Point_matrix pair_target(const Docking_rule& rule, const Point_matrix& first, Point_matrix second,
+                         const Point_matrix& second_rest, const Rigid_motion& pair_motion, const Point_matrix& rest)
+{
+  if(!rule.seam.empty())
+  {
+    Point_matrix from(rule.seam.size(), 3), to(rule.seam.size(), 3);
+    for(std::size_t k = 0; k < rule.seam.size(); ++k)
+    {
+      from.row(k) = second.row(rule.seam[k].second);
+      to.row(k) = first.row(rule.seam[k].first);
+    }
+    const Eigen::Vector3d spread =
+      Eigen::JacobiSVD<Point_matrix>(from.rowwise() - from.colwise().mean()).singularValues();
+    if(spread[1] > 1e-3 * spread[0])
+      second = fit_rigid_motion(from, to).apply(second);
+    else
+    {
+      second = fit_rigid_motion(second, second_rest).apply(second);
+      Point_matrix seam(rule.seam.size(), 3);
+      for(std::size_t k = 0; k < rule.seam.size(); ++k) seam.row(k) = second.row(rule.seam[k].second);
+      second.rowwise() += to.colwise().mean() - seam.colwise().mean();
+    }
+  }
+  Point_matrix target(rule.points.size(), 3);
+  for(std::size_t k = 0; k < rule.points.size(); ++k)
+    target.row(k) = (rule.points[k].side == 0 ? first : second).row(rule.points[k].local);
+  return to_space_frame(pair_motion, fit_rigid_motion(target, rest).apply(target));
+}
+
+Embedding_problem make_problem(const Morphable_part_model& model, int example, const Target_policy& policy,
+                               const std::function<Eigen::VectorXd(const Shape_space&)>& pair_sigmas)
 {
   if(example < 0 || example >= static_cast<int>(model.examples.size()))
     throw Input_error("model", "example " + std::to_string(example),
@@ -64,6 +102,9 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
     }
   }
 
+  // Each part's target shape, placed where the part rests: pair targets are
+  // assembled from them, so that parts and pairs ask for the same shape.
+  std::vector<Point_matrix> placed_targets;
   for(std::size_t i = 0; i < graph.nodes.size(); ++i)
   {
     const Part_node& node = graph.nodes[i];
@@ -80,6 +121,7 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
     c.sigmas = t.sigmas;
     c.border.assign(seams[i].begin(), seams[i].end());
     c.sigma_bound = model.parameters.sigma_bound;
+    placed_targets.push_back(node.motion.apply(t.mean));
     problem.clusters.push_back(std::move(c));
   }
 
@@ -129,14 +171,33 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
     std::sort(c.border.begin(), c.border.end());
     c.border.erase(std::unique(c.border.begin(), c.border.end()), c.border.end());
     c.edges = rule.edges;
-    const Target t = policy(rule.space, e.coordinates, to_space_frame(e.motion, gather(ex.mesh.points, c.vertices)),
-                            std::string());
-    c.mean = t.mean;
+    c.mean = pair_target(rule, placed_targets[e.first], placed_targets[e.second],
+                         gather(ex.mesh.points, side[1]->vertices), e.motion, gather(ex.mesh.points, c.vertices));
     c.modes = rule.space.modes;
-    c.sigmas = t.sigmas;
+    c.sigmas = pair_sigmas(rule.space);
     c.sigma_bound = model.parameters.sigma_bound;
     problem.clusters.push_back(std::move(c));
   }
+
+  // Neighbouring instances of one type: docked to each other or to a common part.
+  std::vector<std::set<int>> neighbours(graph.nodes.size());
+  for(const Part_edge& e : graph.edges)
+  {
+    neighbours[e.first].insert(e.second);
+    neighbours[e.second].insert(e.first);
+  }
+  std::set<std::pair<int, int>> coupled;
+  for(std::size_t a = 0; a < graph.nodes.size(); ++a)
+    for(int b : neighbours[a])
+    {
+      std::set<int> near = neighbours[b];
+      near.insert(b);
+      for(int c : near)
+        if(c != int(a) && graph.nodes[c].type == graph.nodes[a].type &&
+           model.types[graph.nodes[a].type].space.number_of_modes() > 0)
+          coupled.insert({std::min<int>(a, c), std::max<int>(a, c)});
+    }
+  problem.coupled_clusters.assign(coupled.begin(), coupled.end());
   return problem;
 }
 
@@ -146,6 +207,19 @@ Embedding_problem make_deformation_problem(const Morphable_part_model& model, in
 {
   return make_caricature_problem(model, 1., example);
 }
+
+namespace {
+
+Eigen::VectorXd learned_sigmas(const Shape_space& space) { return space.sigmas; }
+
+// Small isotropic deviations relative to the space's largest one.
+Eigen::VectorXd isotropic_sigmas(const Shape_space& space, double relative)
+{
+  const double largest = space.sigmas.size() > 0 ? space.sigmas.maxCoeff() : 0.;
+  return Eigen::VectorXd::Constant(space.sigmas.size(), relative * largest);
+}
+
+} // namespace
 
 Embedding_problem make_caricature_problem(const Morphable_part_model& model, double factor, int example)
 {
@@ -157,7 +231,7 @@ Embedding_problem make_caricature_problem(const Morphable_part_model& model, dou
     if(factor != 1.) t.mean += (factor - 1.) * mode_displacement(space, coordinates);
     t.sigmas = space.sigmas;
     return t;
-  });
+  }, learned_sigmas);
 }
 
 Embedding_problem make_symmetrization_problem(const Morphable_part_model& model, int example,
@@ -183,10 +257,9 @@ Embedding_problem make_symmetrization_problem(const Morphable_part_model& model,
       const auto it = options.type_coordinates.find(type_name);
       t.mean = it == options.type_coordinates.end() ? space.mean : space.shape(it->second);
     }
-    const double largest = space.sigmas.size() > 0 ? space.sigmas.maxCoeff() : 0.;
-    t.sigmas = Eigen::VectorXd::Constant(space.sigmas.size(), options.relative_sigma * largest);
+    t.sigmas = isotropic_sigmas(space, options.relative_sigma);
     return t;
-  });
+  }, [&options](const Shape_space& space) { return isotropic_sigmas(space, options.relative_sigma); });
 }
 
 } // namespace MPM

@@ -129,6 +129,7 @@ struct Embedding_solver::Impl
   // Schur blocks, 3x3 each: H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d,
   // Gz[ck] = (L_c B_ck)^T Z, with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
   std::vector<Eigen::Matrix3d> h_blocks, g_blocks, z_blocks;
+  Eigen::MatrixXd coupling;       // coupled-coordinates term, total_modes x total_modes
   Eigen::MatrixXd s0;             // constant part of the Schur complement
   Eigen::VectorXd r0;             // constant part of its right-hand side
   Point_matrix b0;                // handle and anchor right-hand side
@@ -192,6 +193,25 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
 
   for(const Cluster_data& c : clusters)
     for(int k = 0; k < c.number_of_modes(); ++k) cluster_of_mode.push_back(static_cast<int>(&c - clusters.data()));
+
+  coupling = Eigen::MatrixXd::Zero(total_modes, total_modes);
+  for(const auto& [a, b] : problem.coupled_clusters)
+  {
+    if(a < 0 || b < 0 || a >= int(clusters.size()) || b >= int(clusters.size()) || a == b ||
+       clusters[a].number_of_modes() != clusters[b].number_of_modes())
+      throw Input_error("embedding problem", "coupled clusters (" + std::to_string(a) + ", " + std::to_string(b) + ")",
+                        "must be two distinct clusters with the same number of modes");
+    const Cluster_data& ca = clusters[a];
+    const Cluster_data& cb = clusters[b];
+    for(int k = 0; k < ca.number_of_modes(); ++k)
+    {
+      const double w = options.coupling_weight * 0.5 * (ca.prior[k] + cb.prior[k]);
+      coupling(ca.offset + k, ca.offset + k) += w;
+      coupling(cb.offset + k, cb.offset + k) += w;
+      coupling(ca.offset + k, cb.offset + k) -= w;
+      coupling(cb.offset + k, ca.offset + k) -= w;
+    }
+  }
 
   positions = mesh.points;
   coordinates = Eigen::VectorXd::Zero(total_modes);
@@ -336,7 +356,7 @@ void Embedding_solver::Impl::factor()
 
   if(options.global_step != Global_step::schur) return;
   const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  s0 = Eigen::MatrixXd::Zero(dm, dm);
+  s0 = coupling;
   r0 = Eigen::VectorXd::Zero(dm);
   for(const Cluster_data& c : clusters)
     for(int k = 0; k < c.number_of_modes(); ++k)
@@ -476,13 +496,13 @@ void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd
     for(int k = 0; k < d.number_of_modes(); ++k)
     {
       const int row = 3 * n + d.offset + k;
-      const Eigen::MatrixXd coupling = d.laplacian_modes[k] * rotations[c].transpose();
+      const Eigen::MatrixXd column = d.laplacian_modes[k] * rotations[c].transpose();
       for(std::size_t i = 0; i < d.vertices.size(); ++i)
         for(int a = 0; a < 3; ++a)
-          if(coupling(i, a) != 0.)
+          if(column(i, a) != 0.)
           {
-            t.emplace_back(row, a * n + d.vertices[i], -coupling(i, a));
-            t.emplace_back(a * n + d.vertices[i], row, -coupling(i, a));
+            t.emplace_back(row, a * n + d.vertices[i], -column(i, a));
+            t.emplace_back(a * n + d.vertices[i], row, -column(i, a));
           }
       for(int l = 0; l < d.number_of_modes(); ++l)
         t.emplace_back(row, 3 * n + d.offset + l, (d.modes[k].array() * d.laplacian_modes[l].array()).sum());
@@ -490,6 +510,9 @@ void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd
       rhs[row] = -(d.modes[k].array() * d.laplacian_mean.array()).sum();
     }
   }
+  for(int a = 0; a < dm; ++a)
+    for(int b = 0; b < dm; ++b)
+      if(coupling(a, b) != 0.) t.emplace_back(3 * n + a, 3 * n + b, coupling(a, b));
   Sparse k(size, size);
   k.setFromTriplets(t.begin(), t.end());
   Eigen::SimplicialLDLT<Sparse> ldlt(k);
@@ -514,6 +537,7 @@ double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::Vec
     for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
   }
   if(only >= 0) return e;
+  e += lambda.dot(coupling * lambda);
   const double handle_weight = options.handle_weight * mean_diagonal;
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     e += handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm();

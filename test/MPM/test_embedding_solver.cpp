@@ -172,3 +172,103 @@ TEST(Embedding_solver, rejects_bad_handles)
   solver.solve();
   EXPECT_TRUE(solver.positions().allFinite());
 }
+
+namespace {
+
+// Instances of each multi-instance type, in correspondence, from positions `x`.
+std::map<int, std::vector<Point_matrix>> instances_by_type(const Morphable_part_model& model, const Point_matrix& x)
+{
+  std::map<int, std::vector<Point_matrix>> r;
+  for(const Part_node& node : model.examples[0].graph.nodes)
+    if(model.types[node.type].space.number_of_instances() > 1) r[node.type].push_back(rows(x, node.vertices));
+  return r;
+}
+
+// Variance across instances after generalized Procrustes alignment.
+double variance_across_instances(const std::vector<Point_matrix>& instances)
+{
+  return learn_shape_space(instances).total_variance();
+}
+
+Eigen::Vector3d face_normal(const Point_matrix& x, const Triangle& t)
+{
+  const Eigen::Vector3d a = x.row(t[0]), b = x.row(t[1]), c = x.row(t[2]);
+  return (b - a).cross(c - a);
+}
+
+// Faces whose normal turns over relative to their part's best rigid motion.
+int flipped_faces(const Morphable_part_model& model, const Point_matrix& before, const Point_matrix& after)
+{
+  int flips = 0;
+  for(const Part_node& node : model.examples[0].graph.nodes)
+  {
+    const Rigid_motion m = fit_rigid_motion(rows(before, node.vertices), rows(after, node.vertices));
+    for(const Triangle& local : model.types[node.type].triangles)
+    {
+      const Triangle t = {node.vertices[local[0]], node.vertices[local[1]], node.vertices[local[2]]};
+      if(face_normal(after, t).dot(m.rotation * face_normal(before, t)) <= 0) ++flips;
+    }
+  }
+  return flips;
+}
+
+class Symmetrize : public ::testing::TestWithParam<Synthetic_family>
+{};
+
+} // namespace
+
+TEST_P(Symmetrize, variance_drops_by_95_percent_without_flips)
+{
+  const Learned& l = learned(GetParam());
+  Embedding_solver solver(make_symmetrization_problem(l.model));
+  const Solve_report report = solver.solve();
+  const Point_matrix& input = l.truth.mesh.mesh.points;
+  ASSERT_TRUE(solver.positions().allFinite());
+  const auto before = instances_by_type(l.model, input);
+  const auto after = instances_by_type(l.model, solver.positions());
+  ASSERT_FALSE(before.empty());
+  for(const auto& [type, instances] : before)
+  {
+    const double v0 = variance_across_instances(instances), v1 = variance_across_instances(after.at(type));
+    std::cout << family_name(GetParam()) << " " << l.model.types[type].name << ": variance " << v0 << " -> " << v1
+              << " (" << 100 * (1 - v1 / v0) << "% less), " << report.iterations << " iterations\n";
+    EXPECT_LT(v1, 0.05 * v0) << l.model.types[type].name;
+  }
+  EXPECT_EQ(flipped_faces(l.model, input, solver.positions()), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Hexa_grid_and_hand, Symmetrize,
+                         ::testing::Values(Synthetic_family::hexa_grid, Synthetic_family::hand),
+                         [](const ::testing::TestParamInfo<Synthetic_family>& info) {
+                           return info.param == Synthetic_family::hand ? std::string("hand") : std::string("hexa_grid");
+                         });
+
+TEST(Caricature, factor_two_doubles_the_distance_from_the_mean_within_the_subspace)
+{
+  // The hexa-grid varies linearly: doubling is exact up to the solver's
+  // tolerance. The hand's bends are not linear in its modes, so doubled
+  // coordinates of neighbouring segments disagree slightly at their seams.
+  const std::pair<Synthetic_family, double> cases[] = {{Synthetic_family::hexa_grid, 0.01},
+                                                       {Synthetic_family::hand, 0.05}};
+  for(const auto& [family, bound] : cases)
+  {
+    const Learned& l = learned(family);
+    Embedding_options options;
+    options.max_iterations = 5000;
+    options.tolerance = 1e-10;
+    Embedding_solver solver(make_caricature_problem(l.model, 2.), options);
+    solver.solve();
+    double worst = 0.;
+    for(const Part_node& node : l.model.examples[0].graph.nodes)
+    {
+      const Shape_space& space = l.model.types[node.type].space;
+      if(space.number_of_modes() == 0) continue;
+      Eigen::VectorXd fitted;
+      Rigid_motion motion;
+      space.fit(rows(solver.positions(), node.vertices), fitted, motion);
+      worst = std::max(worst, (fitted - 2 * node.coordinates).norm() / node.coordinates.norm());
+    }
+    std::cout << family_name(family) << ": caricature coordinates within " << 100 * worst << "% of twice the input's\n";
+    EXPECT_LT(worst, bound) << family_name(family);
+  }
+}

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -44,6 +45,10 @@ struct Embedding_problem
   Indexed_mesh mesh;              ///< connectivity and rest (initial) positions
   std::vector<Cluster> clusters;  ///< energy terms
   double sigma_sub = 1.;          ///< flexibility outside the subspaces
+  /// Pairs of clusters of the same shape space whose coordinates the
+  /// coupling term `Embedding_options::coupling_weight` pulls together
+  /// (neighbouring same-type parts, for locally symmetric edits).
+  std::vector<std::pair<int, int>> coupled_clusters;
 };
 
 } // namespace MPM

@@ -40,6 +40,10 @@ struct Embedding_options
   double handle_weight = 100.;
   /// Anchor stiffness of pieces without handles, relative likewise.
   double anchor_weight = 1e-6;
+  /// Weight of the coupled-coordinates term `w |lambda_a - lambda_b|^2` over
+  /// the problem's coupled cluster pairs, relative to the clusters' mean
+  /// prior precision; 0 disables it.
+  double coupling_weight = 0.;
   int max_iterations = 100;  ///< iteration cap of `solve()`
   double tolerance = 1e-8;   ///< stop when the energy decreases by less than this fraction
 };
