@@ -636,9 +636,70 @@ Solve_report Embedding_solver::solve()
   }
   Solve_report report;
   double previous = d.energy_of(d.positions, d.coordinates);
+  // Anderson acceleration (type II) of the fixed-point map "local step, then
+  // global step" on the stacked positions and coordinates.
+  const int history = std::max(0, d.options.anderson_history);
+  const auto pack = [&]() {
+    Eigen::VectorXd x(3 * d.n + d.total_modes);
+    for(int a = 0; a < 3; ++a) x.segment(a * d.n, d.n) = d.positions.col(a);
+    x.tail(d.total_modes) = d.coordinates;
+    return x;
+  };
+  const auto unpack = [&](const Eigen::VectorXd& x) {
+    for(int a = 0; a < 3; ++a) d.positions.col(a) = x.segment(a * d.n, d.n);
+    d.coordinates = x.tail(d.total_modes);
+  };
+  Eigen::VectorXd x = pack(), previous_f, previous_g;
+  std::vector<Eigen::VectorXd> delta_f, delta_g;
   for(int it = 0; it < d.options.max_iterations; ++it)
   {
-    const double e = iterate();
+    double e = iterate();
+    const Eigen::VectorXd g = pack();
+    const Eigen::VectorXd f = g - x;
+    if(history > 0 && previous_f.size() > 0)
+    {
+      delta_f.push_back(f - previous_f);
+      delta_g.push_back(g - previous_g);
+      if(static_cast<int>(delta_f.size()) > history)
+      {
+        delta_f.erase(delta_f.begin());
+        delta_g.erase(delta_g.begin());
+      }
+    }
+    previous_f = f;
+    previous_g = g;
+    x = g;
+    if(!delta_f.empty())
+    {
+      const int m = static_cast<int>(delta_f.size());
+      Eigen::MatrixXd normal(m, m);
+      Eigen::VectorXd rhs(m);
+      for(int i = 0; i < m; ++i)
+      {
+        rhs[i] = delta_f[i].dot(f);
+        for(int j = 0; j < m; ++j) normal(i, j) = delta_f[i].dot(delta_f[j]);
+      }
+      const Eigen::VectorXd theta = normal.completeOrthogonalDecomposition().solve(rhs);
+      Eigen::VectorXd accelerated = g;
+      for(int i = 0; i < m; ++i) accelerated -= theta[i] * delta_g[i];
+      const std::vector<Eigen::Matrix3d> plain_rotations = d.rotations;
+      unpack(accelerated);
+      d.local_step();
+      const double e_accelerated = accelerated.allFinite() ? d.energy_of(d.positions, d.coordinates)
+                                                           : std::numeric_limits<double>::infinity();
+      if(e_accelerated < e)
+      {
+        x = accelerated;
+        e = e_accelerated;
+      }
+      else
+      {
+        unpack(g);
+        d.rotations = plain_rotations;
+        delta_f.clear();
+        delta_g.clear();
+      }
+    }
     report.energies.push_back(e);
     ++report.iterations;
     if(previous - e <= d.options.tolerance * std::max(previous, std::numeric_limits<double>::min()))

@@ -44,6 +44,11 @@ struct Embedding_options
   /// the problem's coupled cluster pairs, relative to the clusters' mean
   /// prior precision; 0 disables it.
   double coupling_weight = 0.;
+  /// Anderson acceleration of `solve()`: how many previous iterates it
+  /// combines (0 disables). A combined step is kept only when it lowers the
+  /// energy below the plain local/global step, so the energy still never
+  /// increases.
+  int anderson_history = 5;
   int max_iterations = 100;  ///< iteration cap of `solve()`
   double tolerance = 1e-8;   ///< stop when the energy decreases by less than this fraction
 };
@@ -90,9 +95,9 @@ public:
   /// Removes all handles.
   void clear_handles();
 
-  /// Runs local/global iterations from the current state until the energy
-  /// decreases by less than `options.tolerance` (relative) or
-  /// `options.max_iterations` is reached.
+  /// Runs local/global iterations (Anderson-accelerated) from the current
+  /// state until the energy decreases by less than `options.tolerance`
+  /// (relative) or `options.max_iterations` is reached.
   Solve_report solve();
   /// Runs exactly one local/global iteration; returns the energy after it.
   double iterate();
