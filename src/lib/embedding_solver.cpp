@@ -130,12 +130,28 @@ struct Embedding_solver::Impl
   // Gz[ck] = (L_c B_ck)^T Z, with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
   std::vector<Eigen::Matrix3d> h_blocks, g_blocks, z_blocks;
   Eigen::MatrixXd coupling;       // coupled-coordinates term, total_modes x total_modes
+  Eigen::MatrixXd mode_gram;      // <B_ck, L_c B_cl>, block diagonal
+  Eigen::VectorXd mean_energy;    // <M_c, L_c M_c> per cluster
+  // For the reduced step, with X_c = L_c (M_c + sum_k lambda_ck B_ck):
+  // plm[d][c] = P_d^T L_c M_c, qlm[dl][c] = Q_dl^T L_c M_c, zlm[c] = Z^T L_c M_c,
+  // so that W[c][d] = X_c^T A11^-1 X_d is a short sum of blocks.
+  std::vector<Eigen::Matrix3d> plm_blocks, qlm_blocks, zlm_blocks;
+  double handle_constant = 0.;    // sum w_h |y_h|^2 + anchors
+  double b0_z = 0.;               // <b0, Z>
   Eigen::MatrixXd s0;             // constant part of the Schur complement
   Eigen::VectorXd r0;             // constant part of its right-hand side
   Point_matrix b0;                // handle and anchor right-hand side
   std::vector<int> cluster_of_mode;
 
-  // State.
+  // State. With the reduced step, positions are implicit (A11^-1 b(R, lambda))
+  // until asked for; `w_blocks` then holds W for the current coordinates.
+  bool implicit = false;
+  bool positions_valid = true;
+  // Everything is solved relative to the rest centroid, which keeps the
+  // handle constants (and so the rounding of reduced energies) small.
+  Eigen::RowVector3d origin;
+  Point_matrix world_positions;
+  std::vector<Eigen::Matrix3d> w_blocks;
   Point_matrix positions;
   Eigen::VectorXd coordinates;
   std::vector<Eigen::Matrix3d> rotations;
@@ -150,7 +166,12 @@ struct Embedding_solver::Impl
   Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
   Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
   void local_step();
-  void global_step_schur(Point_matrix& v, Eigen::VectorXd& lambda);
+  void reduced_local_step();
+  Eigen::VectorXd solve_coordinates() const;
+  Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
+  std::vector<Eigen::Matrix3d> w_of(const Eigen::VectorXd& lambda) const;
+  double reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const;
+  const Point_matrix& materialized_positions();
   void global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda);
   double energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only = -1) const;
   void check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
@@ -159,6 +180,8 @@ struct Embedding_solver::Impl
 Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_options& o)
   : options(o), mesh(problem.mesh), n(problem.mesh.number_of_vertices())
 {
+  origin = n > 0 ? Eigen::RowVector3d(mesh.points.colwise().mean()) : Eigen::RowVector3d::Zero();
+  mesh.points.rowwise() -= origin;
   if(!(problem.sigma_sub > 0) || !std::isfinite(problem.sigma_sub))
     throw Input_error("embedding problem", "sigma_sub", "must be positive and finite");
   if(!problem.mesh.points.allFinite())
@@ -354,20 +377,28 @@ void Embedding_solver::Impl::factor()
   factored = true;
   handle_terms_ready = false;
 
-  if(options.global_step != Global_step::schur) return;
+  if(options.global_step == Global_step::direct) return;
   const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  s0 = coupling;
+  mode_gram = Eigen::MatrixXd::Zero(dm, dm);
+  mean_energy.resize(nc);
   r0 = Eigen::VectorXd::Zero(dm);
   for(const Cluster_data& c : clusters)
+  {
+    mean_energy[&c - clusters.data()] = (c.mean.array() * c.laplacian_mean.array()).sum();
     for(int k = 0; k < c.number_of_modes(); ++k)
     {
       for(int l = 0; l < c.number_of_modes(); ++l)
-        s0(c.offset + k, c.offset + l) = (c.modes[k].array() * c.laplacian_modes[l].array()).sum();
-      s0(c.offset + k, c.offset + k) += c.prior[k];
+        mode_gram(c.offset + k, c.offset + l) = (c.modes[k].array() * c.laplacian_modes[l].array()).sum();
       r0[c.offset + k] = -(c.modes[k].array() * c.laplacian_mean.array()).sum();
     }
+  }
+  s0 = mode_gram + coupling;
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k) s0(c.offset + k, c.offset + k) += c.prior[k];
   h_blocks.assign(std::size_t(dm) * dm, Eigen::Matrix3d::Zero());
   g_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
+  qlm_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
+  plm_blocks.assign(std::size_t(nc) * nc, Eigen::Matrix3d::Zero());
   // Right-hand sides are solved in batches to bound memory on large models.
   const int columns = dm + nc;
   const int batch = 16;
@@ -389,15 +420,21 @@ void Embedding_solver::Impl::factor()
     const Eigen::MatrixXd solved = solver->solve(rhs);
     for(const Cluster_data& c : clusters)
     {
+      const int ci = static_cast<int>(&c - clusters.data());
       const Eigen::MatrixXd local = gather(c, solved);
-      for(int k = 0; k < c.number_of_modes(); ++k)
-        for(int j = 0; j < count; ++j)
+      for(int j = 0; j < count; ++j)
+      {
+        const int column = first + j;
+        const Eigen::Matrix3d with_mean = local.middleCols<3>(3 * j).transpose() * c.laplacian_mean;
+        if(column < dm) qlm_blocks[std::size_t(column) * nc + ci] = with_mean;
+        else plm_blocks[std::size_t(column - dm) * nc + ci] = with_mean;
+        for(int k = 0; k < c.number_of_modes(); ++k)
         {
-          const int column = first + j;
           const Eigen::Matrix3d block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
           if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = block;
           else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = block;
         }
+      }
     }
   }
 }
@@ -411,18 +448,27 @@ void Embedding_solver::Impl::prepare_handle_terms()
   const double handle_weight = options.handle_weight * mean_diagonal;
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     b0.row(handle_vertices[h]) += handle_weight * handle_targets.row(h);
-  if(options.global_step == Global_step::schur && total_modes > 0)
+  handle_constant = 0.;
+  for(int v = 0; v < n; ++v) handle_constant += anchor[v] * mesh.points.row(v).squaredNorm();
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
+  if(options.global_step != Global_step::direct)
   {
     const Eigen::MatrixXd z = solver->solve(b0);
+    b0_z = (b0.array() * z.array()).sum();
     z_blocks.assign(total_modes, Eigen::Matrix3d::Zero());
+    zlm_blocks.assign(clusters.size(), Eigen::Matrix3d::Zero());
     for(const Cluster_data& c : clusters)
     {
       const Eigen::MatrixXd local = gather(c, z);
+      zlm_blocks[&c - clusters.data()] = local.transpose() * c.laplacian_mean;
       for(int k = 0; k < c.number_of_modes(); ++k)
         z_blocks[c.offset + k] = c.laplacian_modes[k].transpose() * local;
     }
   }
   handle_terms_ready = true;
+  // The blocks of the implicit positions depend on the handle terms.
+  if(implicit) w_blocks = w_of(coordinates);
 }
 
 void Embedding_solver::Impl::local_step()
@@ -437,33 +483,33 @@ void Embedding_solver::Impl::local_step()
   }
 }
 
-void Embedding_solver::Impl::global_step_schur(Point_matrix& v, Eigen::VectorXd& lambda)
+Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
 {
   const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  lambda = Eigen::VectorXd::Zero(dm);
-  if(dm > 0)
+  if(dm == 0) return Eigen::VectorXd::Zero(0);
+  std::vector<Eigen::Matrix3d> relative(std::size_t(nc) * nc); // R_d^T R_c at [c * nc + d]
+  for(int c = 0; c < nc; ++c)
+    for(int d = 0; d < nc; ++d) relative[std::size_t(c) * nc + d] = rotations[d].transpose() * rotations[c];
+  Eigen::MatrixXd s = s0;
+  Eigen::VectorXd r = r0;
+  for(int a = 0; a < dm; ++a)
   {
-    // R_d^T R_c for every pair of clusters that carry modes or are referenced.
-    Eigen::MatrixXd s = s0;
-    Eigen::VectorXd r = r0;
-    for(int a = 0; a < dm; ++a)
-    {
-      const int c = cluster_of_mode[a];
-      for(int b = 0; b < dm; ++b)
-      {
-        const int d = cluster_of_mode[b];
-        s(a, b) -= trace_product(h_blocks[std::size_t(a) * dm + b], rotations[d].transpose() * rotations[c]);
-      }
-      for(int d = 0; d < nc; ++d)
-        r[a] += trace_product(g_blocks[std::size_t(a) * nc + d], rotations[d].transpose() * rotations[c]);
-      r[a] += trace_product(z_blocks[a], rotations[c]);
-    }
-    s = 0.5 * (s + s.transpose());
-    Eigen::LLT<Eigen::MatrixXd> llt(s);
-    if(llt.info() != Eigen::Success)
-      throw Computation_error("embedding: the shape-coordinate system is not positive definite");
-    lambda = llt.solve(r);
+    const int c = cluster_of_mode[a];
+    for(int b = 0; b < dm; ++b)
+      s(a, b) -= trace_product(h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
+    for(int d = 0; d < nc; ++d)
+      r[a] += trace_product(g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
+    r[a] += trace_product(z_blocks[a], rotations[c]);
   }
+  s = 0.5 * (s + s.transpose());
+  Eigen::LLT<Eigen::MatrixXd> llt(s);
+  if(llt.info() != Eigen::Success)
+    throw Computation_error("embedding: the shape-coordinate system is not positive definite");
+  return llt.solve(r);
+}
+
+Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambda) const
+{
   Eigen::MatrixXd rhs = b0;
   for(std::size_t c = 0; c < clusters.size(); ++c)
   {
@@ -473,7 +519,79 @@ void Embedding_solver::Impl::global_step_schur(Point_matrix& v, Eigen::VectorXd&
     const Eigen::MatrixXd rotated = lm * rotations[c].transpose();
     for(std::size_t i = 0; i < d.vertices.size(); ++i) rhs.row(d.vertices[i]) += rotated.row(i);
   }
-  v = solver->solve(rhs);
+  return solver->solve(rhs);
+}
+
+// W[c][d] = X_c^T A11^-1 X_d at [c * nc + d], and X_c^T Z at [nc * nc + c].
+std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd& lambda) const
+{
+  const int nc = static_cast<int>(clusters.size()), dm = total_modes;
+  std::vector<Eigen::Matrix3d> w(std::size_t(nc) * nc + nc);
+  for(int c = 0; c < nc; ++c)
+  {
+    const Cluster_data& cc = clusters[c];
+    for(int d = 0; d < nc; ++d)
+    {
+      const Cluster_data& cd = clusters[d];
+      Eigen::Matrix3d block = plm_blocks[std::size_t(d) * nc + c].transpose();
+      for(int l = 0; l < cd.number_of_modes(); ++l)
+        block += lambda[cd.offset + l] * qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
+      for(int k = 0; k < cc.number_of_modes(); ++k)
+      {
+        const double lk = lambda[cc.offset + k];
+        block += lk * g_blocks[std::size_t(cc.offset + k) * nc + d];
+        for(int l = 0; l < cd.number_of_modes(); ++l)
+          block += lk * lambda[cd.offset + l] * h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
+      }
+      w[std::size_t(c) * nc + d] = block;
+    }
+    Eigen::Matrix3d z = zlm_blocks[c].transpose();
+    for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * z_blocks[cc.offset + k];
+    w[std::size_t(nc) * nc + c] = z;
+  }
+  return w;
+}
+
+// The energy at the implicit positions: for fixed rotations and coordinates
+// the optimal V = A11^-1 b gives E = sum_c <M~_c, L_c M~_c> + priors + handle
+// constants - b^T A11^-1 b, all from blocks.
+double Embedding_solver::Impl::reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const
+{
+  const int nc = static_cast<int>(clusters.size());
+  double e = mean_energy.sum() - 2. * r0.dot(lambda) + lambda.dot((mode_gram + coupling) * lambda) + handle_constant;
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k) e += c.prior[k] * lambda[c.offset + k] * lambda[c.offset + k];
+  double b_a_b = b0_z;
+  for(int c = 0; c < nc; ++c)
+  {
+    for(int d = 0; d < nc; ++d)
+      b_a_b += trace_product(w[std::size_t(c) * nc + d], rotations[d].transpose() * rotations[c]);
+    b_a_b += 2. * trace_product(w[std::size_t(nc) * nc + c], rotations[c]);
+  }
+  return e - b_a_b;
+}
+
+// The rotation fit from blocks: C_c = V^T L_c M~_c = sum_d R_d W[d][c] + (X_c^T Z)^T.
+void Embedding_solver::Impl::reduced_local_step()
+{
+  const int nc = static_cast<int>(clusters.size());
+  const std::vector<Eigen::Matrix3d> previous = rotations;
+  for(int c = 0; c < nc; ++c)
+  {
+    Eigen::Matrix3d covariance = w_blocks[std::size_t(nc) * nc + c].transpose();
+    for(int d = 0; d < nc; ++d) covariance += previous[d] * w_blocks[std::size_t(d) * nc + c];
+    rotations[c] = closest_rotation(covariance);
+  }
+}
+
+const Point_matrix& Embedding_solver::Impl::materialized_positions()
+{
+  if(!positions_valid)
+  {
+    positions = positions_from(coordinates);
+    positions_valid = true;
+  }
+  return positions;
 }
 
 // The reference: the whole quadratic in (x, y, z, lambda) assembled and
@@ -586,6 +704,7 @@ void Embedding_solver::set_handles(const std::vector<int>& vertices, const Point
   if(vertices != d.handle_vertices) d.factored = false;
   d.handle_vertices = vertices;
   d.handle_targets = targets;
+  d.handle_targets.rowwise() -= d.origin;
   d.handle_terms_ready = false;
   d.compute_anchor();
 }
@@ -597,25 +716,109 @@ double Embedding_solver::iterate()
   Impl& d = *impl_;
   if(!d.handle_terms_ready) d.prepare_handle_terms();
   const std::vector<Eigen::Matrix3d> previous_rotations = d.rotations;
-  d.local_step();
-  Point_matrix v;
-  Eigen::VectorXd lambda;
+  if(d.implicit) d.reduced_local_step();
+  else d.local_step();
   try
   {
-    if(d.options.global_step == Global_step::schur) d.global_step_schur(v, lambda);
-    else d.global_step_direct(v, lambda);
-    d.check_finite(v, lambda);
+    switch(d.options.global_step)
+    {
+    case Global_step::reduced:
+    {
+      Eigen::VectorXd lambda = d.solve_coordinates();
+      std::vector<Eigen::Matrix3d> w = d.w_of(lambda);
+      const double e = d.reduced_energy(lambda, w);
+      if(!lambda.allFinite() || !std::isfinite(e)) d.check_finite(d.positions, lambda);
+      d.coordinates = std::move(lambda);
+      d.w_blocks = std::move(w);
+      d.implicit = true;
+      d.positions_valid = false;
+      ++d.iterations_since_reset;
+      return e;
+    }
+    case Global_step::schur:
+    case Global_step::direct:
+    {
+      Point_matrix v;
+      Eigen::VectorXd lambda;
+      if(d.options.global_step == Global_step::schur)
+      {
+        lambda = d.solve_coordinates();
+        v = d.positions_from(lambda);
+      }
+      else
+        d.global_step_direct(v, lambda);
+      d.check_finite(v, lambda);
+      d.positions = std::move(v);
+      d.coordinates = std::move(lambda);
+      ++d.iterations_since_reset;
+      return d.energy_of(d.positions, d.coordinates);
+    }
+    }
   }
   catch(...)
   {
     d.rotations = previous_rotations;
     throw;
   }
-  d.positions = std::move(v);
-  d.coordinates = std::move(lambda);
-  ++d.iterations_since_reset;
-  return d.energy_of(d.positions, d.coordinates);
+  return 0.;
 }
+
+namespace {
+
+// Anderson acceleration (type II) of a fixed-point iteration x <- G(x): the
+// next iterate combines the last few images so as to minimize the combined
+// residual G(x) - x in the least-squares sense.
+class Anderson_acceleration
+{
+public:
+  explicit Anderson_acceleration(int history) : history_(history) {}
+
+  // Records x and its image g; returns the accelerated candidate, or g when
+  // there is no history yet.
+  Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& g)
+  {
+    const Eigen::VectorXd f = g - x;
+    if(history_ > 0 && previous_f_.size() > 0)
+    {
+      delta_f_.push_back(f - previous_f_);
+      delta_g_.push_back(g - previous_g_);
+      if(static_cast<int>(delta_f_.size()) > history_)
+      {
+        delta_f_.erase(delta_f_.begin());
+        delta_g_.erase(delta_g_.begin());
+      }
+    }
+    previous_f_ = f;
+    previous_g_ = g;
+    const int m = static_cast<int>(delta_f_.size());
+    if(m == 0) return g;
+    Eigen::MatrixXd normal(m, m);
+    Eigen::VectorXd rhs(m);
+    for(int i = 0; i < m; ++i)
+    {
+      rhs[i] = delta_f_[i].dot(f);
+      for(int j = 0; j < m; ++j) normal(i, j) = delta_f_[i].dot(delta_f_[j]);
+    }
+    const Eigen::VectorXd theta = normal.completeOrthogonalDecomposition().solve(rhs);
+    Eigen::VectorXd candidate = g;
+    for(int i = 0; i < m; ++i) candidate -= theta[i] * delta_g_[i];
+    return candidate;
+  }
+
+  // Forgets the history (after a rejected candidate).
+  void restart()
+  {
+    delta_f_.clear();
+    delta_g_.clear();
+  }
+
+private:
+  int history_;
+  Eigen::VectorXd previous_f_, previous_g_;
+  std::vector<Eigen::VectorXd> delta_f_, delta_g_;
+};
+
+} // namespace
 
 Solve_report Embedding_solver::solve()
 {
@@ -631,73 +834,69 @@ Solve_report Embedding_solver::solve()
     if((motion.apply(rest) - d.handle_targets).squaredNorm() < (rest - d.handle_targets).squaredNorm())
     {
       d.positions = motion.apply(d.mesh.points);
+      d.implicit = false;
+      d.positions_valid = true;
       d.local_step();
     }
   }
   Solve_report report;
-  double previous = d.energy_of(d.positions, d.coordinates);
-  // Anderson acceleration (type II) of the fixed-point map "local step, then
-  // global step" on the stacked positions and coordinates.
-  const int history = std::max(0, d.options.anderson_history);
+  double previous = energy();
+
+  // The accelerated state: rotations and coordinates when positions are
+  // implicit (so that iterations stay independent of the vertex count),
+  // positions and coordinates otherwise.
+  const bool reduced = d.options.global_step == Global_step::reduced;
+  const int nc = number_of_clusters();
   const auto pack = [&]() {
-    Eigen::VectorXd x(3 * d.n + d.total_modes);
-    for(int a = 0; a < 3; ++a) x.segment(a * d.n, d.n) = d.positions.col(a);
+    Eigen::VectorXd x(reduced ? 9 * nc + d.total_modes : 3 * d.n + d.total_modes);
+    if(reduced)
+      for(int c = 0; c < nc; ++c) x.segment<9>(9 * c) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(d.rotations[c].data());
+    else
+      for(int a = 0; a < 3; ++a) x.segment(a * d.n, d.n) = d.positions.col(a);
     x.tail(d.total_modes) = d.coordinates;
     return x;
   };
-  const auto unpack = [&](const Eigen::VectorXd& x) {
-    for(int a = 0; a < 3; ++a) d.positions.col(a) = x.segment(a * d.n, d.n);
+  // Moves to the state `x` and returns its energy.
+  const auto evaluate = [&](const Eigen::VectorXd& x) {
     d.coordinates = x.tail(d.total_modes);
+    if(reduced)
+    {
+      for(int c = 0; c < nc; ++c)
+        d.rotations[c] = closest_rotation(Eigen::Map<const Eigen::Matrix3d>(x.segment<9>(9 * c).data()));
+      d.w_blocks = d.w_of(d.coordinates);
+      return d.reduced_energy(d.coordinates, d.w_blocks);
+    }
+    for(int a = 0; a < 3; ++a) d.positions.col(a) = x.segment(a * d.n, d.n);
+    d.local_step();
+    return d.energy_of(d.positions, d.coordinates);
   };
-  Eigen::VectorXd x = pack(), previous_f, previous_g;
-  std::vector<Eigen::VectorXd> delta_f, delta_g;
+
+  Anderson_acceleration anderson(std::max(0, d.options.anderson_history));
+  Eigen::VectorXd x = pack();
   for(int it = 0; it < d.options.max_iterations; ++it)
   {
     double e = iterate();
     const Eigen::VectorXd g = pack();
-    const Eigen::VectorXd f = g - x;
-    if(history > 0 && previous_f.size() > 0)
-    {
-      delta_f.push_back(f - previous_f);
-      delta_g.push_back(g - previous_g);
-      if(static_cast<int>(delta_f.size()) > history)
-      {
-        delta_f.erase(delta_f.begin());
-        delta_g.erase(delta_g.begin());
-      }
-    }
-    previous_f = f;
-    previous_g = g;
+    const Eigen::VectorXd candidate = anderson.next(x, g);
     x = g;
-    if(!delta_f.empty())
+    if(candidate.size() == g.size() && candidate != g)
     {
-      const int m = static_cast<int>(delta_f.size());
-      Eigen::MatrixXd normal(m, m);
-      Eigen::VectorXd rhs(m);
-      for(int i = 0; i < m; ++i)
-      {
-        rhs[i] = delta_f[i].dot(f);
-        for(int j = 0; j < m; ++j) normal(i, j) = delta_f[i].dot(delta_f[j]);
-      }
-      const Eigen::VectorXd theta = normal.completeOrthogonalDecomposition().solve(rhs);
-      Eigen::VectorXd accelerated = g;
-      for(int i = 0; i < m; ++i) accelerated -= theta[i] * delta_g[i];
       const std::vector<Eigen::Matrix3d> plain_rotations = d.rotations;
-      unpack(accelerated);
-      d.local_step();
-      const double e_accelerated = accelerated.allFinite() ? d.energy_of(d.positions, d.coordinates)
-                                                           : std::numeric_limits<double>::infinity();
-      if(e_accelerated < e)
+      const std::vector<Eigen::Matrix3d> plain_w = d.w_blocks;
+      const Point_matrix plain_positions = reduced ? Point_matrix() : d.positions;
+      const double e_candidate = candidate.allFinite() ? evaluate(candidate) : std::numeric_limits<double>::infinity();
+      if(e_candidate < e)
       {
-        x = accelerated;
-        e = e_accelerated;
+        x = pack();
+        e = e_candidate;
       }
       else
       {
-        unpack(g);
+        d.coordinates = g.tail(d.total_modes);
         d.rotations = plain_rotations;
-        delta_f.clear();
-        delta_g.clear();
+        d.w_blocks = plain_w;
+        if(!reduced) d.positions = plain_positions;
+        anderson.restart();
       }
     }
     report.energies.push_back(e);
@@ -709,10 +908,17 @@ Solve_report Embedding_solver::solve()
     }
     previous = e;
   }
+  // Reduced energies are differences of large sums; the reported residual is
+  // evaluated exactly at the final positions.
+  if(reduced && !report.energies.empty()) report.energies.back() = energy();
   return report;
 }
 
-const Point_matrix& Embedding_solver::positions() const { return impl_->positions; }
+const Point_matrix& Embedding_solver::positions() const
+{
+  impl_->world_positions = impl_->materialized_positions().rowwise() + impl_->origin;
+  return impl_->world_positions;
+}
 
 Eigen::VectorXd Embedding_solver::coordinates(int c) const
 {
@@ -722,14 +928,22 @@ Eigen::VectorXd Embedding_solver::coordinates(int c) const
 
 const Eigen::Matrix3d& Embedding_solver::rotation(int c) const { return impl_->rotations.at(c); }
 
-double Embedding_solver::energy() const { return impl_->energy_of(impl_->positions, impl_->coordinates); }
+double Embedding_solver::energy() const
+{
+  return impl_->energy_of(impl_->materialized_positions(), impl_->coordinates);
+}
 
-double Embedding_solver::cluster_energy(int c) const { return impl_->energy_of(impl_->positions, impl_->coordinates, c); }
+double Embedding_solver::cluster_energy(int c) const
+{
+  return impl_->energy_of(impl_->materialized_positions(), impl_->coordinates, c);
+}
 
 void Embedding_solver::reset()
 {
   Impl& d = *impl_;
   d.positions = d.mesh.points;
+  d.implicit = false;
+  d.positions_valid = true;
   d.coordinates.setZero();
   d.iterations_since_reset = 0;
   d.local_step();

@@ -27,7 +27,8 @@ std::string one_line(std::string s)
 
 } // namespace
 
-Json_reader::json Json_reader::parse_document(const std::string& text, const char* format, int version) const
+Json_reader::json Json_reader::parse_document(const std::string& text, const char* format, int version,
+                                              const char* name) const
 {
   json root;
   try {
@@ -38,13 +39,15 @@ Json_reader::json Json_reader::parse_document(const std::string& text, const cha
     fail("", "malformed JSON: " + one_line(e.what()));
   }
   if(!root.is_object())
-    fail("", std::string("a ") + format + " file must be a JSON object, not " + root.type_name());
+    fail("", (name ? std::string("the ") + name : std::string("a ") + format + " file") +
+               " must be a JSON object, not " + root.type_name());
   if(root.contains("format") && string_of(root["format"], "format") != format)
     fail("format", "\"" + root["format"].get<std::string>() + "\" is not \"" + format + "\"");
   if(root.contains("version")) {
     const int found = integer_of(root["version"], "version");
     if(found != version)
-      fail("version", std::string(format) + " version " + std::to_string(found) + ", this build reads version " +
+      fail("version", std::string(name ? name : format) + " version " + std::to_string(found) +
+                        ", this build reads version " +
                         std::to_string(version));
   }
   return root;

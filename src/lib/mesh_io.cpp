@@ -141,6 +141,25 @@ bool parse_double(std::string_view s, double& value)
   return !copy.empty() && end == copy.c_str() + copy.size();
 }
 
+// A vertex coordinate of a text mesh file (OFF, OBJ) must be a finite number.
+void check_coordinate(const std::string& path, const std::string& element, int line, std::string_view text)
+{
+  double x;
+  if(!parse_double(text, x))
+    throw Input_error(path, element, "line " + std::to_string(line) + ": " + printable(text) + " is not a number");
+  if(!std::isfinite(x))
+    throw Input_error(path, element, "non-finite coordinate " + printable(text) + " (line " + std::to_string(line) +
+                                       ")");
+}
+
+// A text file that ends before all the elements its header announced.
+[[noreturn]] void throw_truncated(const std::string& path, std::uint64_t read, std::uint64_t announced,
+                                  const char* elements)
+{
+  throw Input_error(path, "", "truncated: the file ends after " + std::to_string(read) + " of " +
+                                std::to_string(announced) + " " + elements);
+}
+
 // ----------------------------------------------------------------------------
 // OFF specifics.
 
@@ -237,28 +256,16 @@ void diagnose_off(const std::string& path, const std::string& text)
   Token t;
   for(std::uint64_t v = 0; v < h.vertices; ++v) {
     const std::string element = vertex_name(int(v));
-    if(!s.next(t))
-      throw Input_error(path, "", "truncated: the file ends after " + std::to_string(v) + " of " +
-                                      std::to_string(h.vertices) + " vertices");
+    if(!s.next(t)) throw_truncated(path, v, h.vertices, "vertices");
     std::vector<Token> line{t};
     for(const Token& r : s.rest_of_line()) line.push_back(r);
     if(line.size() < 3)
       throw Input_error(path, element, "line " + std::to_string(t.line) + ": fewer than 3 coordinates");
-    for(int c = 0; c < 3; ++c) {
-      double x;
-      if(!parse_double(line[c].text, x))
-        throw Input_error(path, element, "line " + std::to_string(t.line) + ": " + printable(line[c].text) +
-                                           " is not a number");
-      if(!std::isfinite(x))
-        throw Input_error(path, element, "non-finite coordinate " + printable(line[c].text) + " (line " +
-                                           std::to_string(t.line) + ")");
-    }
+    for(int c = 0; c < 3; ++c) check_coordinate(path, element, t.line, line[c].text);
   }
   for(std::uint64_t f = 0; f < h.faces; ++f) {
     const std::string element = face_name(int(f));
-    if(!s.next(t))
-      throw Input_error(path, "", "truncated: the file ends after " + std::to_string(f) + " of " +
-                                      std::to_string(h.faces) + " faces");
+    if(!s.next(t)) throw_truncated(path, f, h.faces, "faces");
     std::uint64_t corners;
     if(!parse_integer(t.text, corners))
       throw Input_error(path, element, "line " + std::to_string(t.line) + ": corner count " +
@@ -298,15 +305,9 @@ void diagnose_obj(const std::string& path, const std::string& text)
     const std::string element = vertex_name(int(vertices++));
     Token t;
     for(int c = 0; c < 3; ++c) {
-      double x;
       if(!s.next(t))
         throw Input_error(path, element, "line " + std::to_string(line_number) + ": fewer than 3 coordinates");
-      if(!parse_double(t.text, x))
-        throw Input_error(path, element, "line " + std::to_string(line_number) + ": " + printable(t.text) +
-                                           " is not a number");
-      if(!std::isfinite(x))
-        throw Input_error(path, element, "non-finite coordinate " + printable(t.text) + " (line " +
-                                           std::to_string(line_number) + ")");
+      check_coordinate(path, element, line_number, t.text);
     }
   }
   for(std::size_t f = 0; f < face_lines.size(); ++f) {

@@ -145,3 +145,17 @@ TEST(AnnotationIo, ParameterRanges)
   MPM_EXPECT_INPUT_ERROR(parse_annotation(with_parameters("[]"), s), "parameters", "must be an object");
   EXPECT_EQ(parse_annotation(with_parameters(R"({"explained_variance": 1})"), s).parameters.explained_variance, 1.);
 }
+
+TEST(AnnotationIo, NumbersBeyondTheDoubleRangeAreInputErrors)
+{
+  // nlohmann::json throws out_of_range (406) for these while parsing.
+  MPM_EXPECT_INPUT_ERROR(parse_annotation(with_parameters(R"({"sigma_sub": 1e999})"), "big.json"), "big.json",
+                         "malformed JSON", "1e999");
+  MPM_EXPECT_INPUT_ERROR(parse_annotation(R"({"parts": [{"label": -1e999, "type": "a"}]})", "big.json"), "big.json",
+                         "malformed JSON", "-1e999");
+
+  mpm_test::Scratch_directory dir;
+  const std::string path = dir.file("big.json");
+  mpm_test::write_bytes(path, with_parameters(R"({"docking_radius": 1e999})"));
+  MPM_EXPECT_INPUT_ERROR(read_annotation(path), path, "malformed JSON", "1e999");
+}

@@ -26,15 +26,23 @@ enum class Sparse_solver
 /// How the quadratic step in positions and shape coordinates is solved.
 enum class Global_step
 {
-  schur,  ///< prefactored vertex block, Schur complement in the coordinates (fast)
-  direct  ///< assemble and factor the whole system every iteration (the reference)
+  /// Iterations that never touch the vertices: rotations commute with the
+  /// prefactored vertex block, so the Schur complement, its right-hand side,
+  /// the rotation fit and the energy are sums of 3x3 blocks precomputed once
+  /// per handle set. Positions cost one back-substitution, when asked for.
+  reduced,
+  /// Prefactored vertex block, Schur complement from precomputed blocks, one
+  /// back-substitution and an explicit rotation fit per iteration.
+  schur,
+  /// Assemble and factor the whole system every iteration: the reference.
+  direct
 };
 
 /// \ingroup PkgMPMRef
 /// Options of the embedding solver.
 struct Embedding_options
 {
-  Global_step global_step = Global_step::schur; ///< fast path or reference
+  Global_step global_step = Global_step::reduced; ///< fast path or reference
   Sparse_solver sparse_solver = Sparse_solver::simplicial_ldlt; ///< factorization
   /// Handle stiffness relative to the mean diagonal of the elastic matrix.
   double handle_weight = 100.;
@@ -57,7 +65,10 @@ struct Embedding_options
 /// What `Embedding_solver::solve()` did.
 struct Solve_report
 {
-  std::vector<double> energies; ///< energy after each iteration
+  /// Energy after each iteration. With `Global_step::reduced` they come from
+  /// precomputed blocks (a difference of two large sums, exact to about
+  /// 1e-14 of the data term); the last one is evaluated at the positions.
+  std::vector<double> energies;
   int iterations = 0;           ///< iterations run
   bool converged = false;       ///< stopped on the tolerance, not the cap
   /// Final energy (the residual energy of the embedding).
@@ -102,7 +113,8 @@ public:
   /// Runs exactly one local/global iteration; returns the energy after it.
   double iterate();
 
-  /// Current vertex positions (n x 3).
+  /// Current vertex positions (n x 3). With `Global_step::reduced` the first
+  /// call after iterating costs one back-substitution.
   const Point_matrix& positions() const;
   /// Current shape coordinates of cluster `c`.
   Eigen::VectorXd coordinates(int c) const;

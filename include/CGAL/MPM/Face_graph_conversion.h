@@ -32,6 +32,7 @@ namespace MPM {
 ///
 /// \tparam FaceGraph a model of `FaceListGraph` whose vertex points are convertible
 ///         to three coordinates through `x()`, `y()`, `z()` of the kernel point type
+/// \param g the triangle mesh to convert
 /// \param np optional named parameters: `vertex_point_map` (default:
 ///        `get(CGAL::vertex_point, g)`)
 ///

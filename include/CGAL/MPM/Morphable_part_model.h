@@ -31,7 +31,9 @@ struct Training_example
 /// grammar, see `Shape_grammar`), and the training examples as part graphs.
 struct Morphable_part_model
 {
-  Model_parameters parameters;      ///< resolved parameters (no automatic values left)
+  /// The parameters, with `sigma_sub` and `docking_radius` resolved; a
+  /// negative `sigma_bound` stays automatic (resolved per cluster when solving).
+  Model_parameters parameters;
   std::vector<Part_type> types;     ///< part types
   std::vector<Docking_rule> rules;  ///< observed docking rules
   std::vector<Training_example> examples; ///< the training meshes

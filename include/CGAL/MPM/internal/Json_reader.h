@@ -26,8 +26,12 @@ public:
   const std::string& source() const { return source_; }
 
   // The text as a JSON object whose optional "format" and "version" keys, when
-  // present, must be `format` and `version`.
-  json parse_document(const std::string& text, const char* format, int version) const;
+  // present, must be `format` and `version`. Malformed JSON and numbers beyond
+  // the double range (`1e999`) throw Input_error too. `name` is what messages
+  // call the document ("annotation": "the annotation must be a JSON object",
+  // "annotation version 2, ..."); by default "a <format> file" and "<format>".
+  json parse_document(const std::string& text, const char* format, int version,
+                      const char* name = nullptr) const;
 
   // Rejects keys outside `allowed`; misspelt optional keys would otherwise be
   // silently ignored.
