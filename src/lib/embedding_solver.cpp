@@ -18,6 +18,10 @@
 
 #include <boost/pending/disjoint_sets.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -51,7 +55,20 @@ public:
     double d;
     return traits_.factor(*matrix_, d);
   }
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) override { return traits_.solver().solve(b); }
+  // Columns are independent triangular solves: on large meshes they run in
+  // parallel, which is most of the cost of a displayed frame.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) override
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(b.rows() > 20000 && b.cols() > 1)
+    {
+      Eigen::MatrixXd x(b.rows(), b.cols());
+      tbb::parallel_for(Eigen::Index(0), b.cols(), [&](Eigen::Index j) { x.col(j) = traits_.solver().solve(b.col(j)); });
+      return x;
+    }
+#endif
+    return traits_.solver().solve(b);
+  }
 
 private:
   using Traits = CGAL::Eigen_solver_traits<EigenSolver>;
@@ -155,6 +172,7 @@ struct Embedding_solver::Impl
   Point_matrix positions;
   Eigen::VectorXd coordinates;
   std::vector<Eigen::Matrix3d> rotations;
+  std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations; // per cluster point, with Rotations::per_vertex
   int iterations_since_reset = 0;
 
   Impl(const Embedding_problem& problem, const Embedding_options& o);
@@ -166,6 +184,7 @@ struct Embedding_solver::Impl
   Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
   Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
   void local_step();
+  Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
   void reduced_local_step();
   Eigen::VectorXd solve_coordinates() const;
   Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
@@ -236,9 +255,13 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
     }
   }
 
+  // Per-vertex rotations have no rotation-commuting structure to exploit.
+  if(options.rotations == Rotations::per_vertex) options.global_step = Global_step::direct;
   positions = mesh.points;
   coordinates = Eigen::VectorXd::Zero(total_modes);
   rotations.assign(clusters.size(), Eigen::Matrix3d::Identity());
+  if(options.rotations == Rotations::per_vertex)
+    for(const Cluster_data& c : clusters) vertex_rotations.emplace_back(c.vertices.size(), Eigen::Matrix3d::Identity());
   compute_anchor();
   local_step();
 }
@@ -476,11 +499,35 @@ void Embedding_solver::Impl::local_step()
   for(std::size_t c = 0; c < clusters.size(); ++c)
   {
     const Cluster_data& d = clusters[c];
+    if(options.rotations == Rotations::per_vertex)
+    {
+      // Each point's rotation fits its incident edges (its one-ring in the cluster).
+      const Point_matrix m = target_shape(d, coordinates);
+      std::vector<Eigen::Matrix3d> covariance(d.vertices.size(), Eigen::Matrix3d::Zero());
+      for(const Weighted_edge& e : d.edges)
+      {
+        const Eigen::Vector3d edge = (positions.row(d.vertices[e.i]) - positions.row(d.vertices[e.j])).transpose();
+        const Eigen::Vector3d rest = (m.row(e.i) - m.row(e.j)).transpose();
+        const Eigen::Matrix3d k = e.w * edge * rest.transpose();
+        covariance[e.i] += k;
+        covariance[e.j] += k;
+      }
+      for(std::size_t i = 0; i < d.vertices.size(); ++i) vertex_rotations[c][i] = closest_rotation(covariance[i]);
+      continue;
+    }
     Point_matrix lm = d.laplacian_mean;
     for(int k = 0; k < d.number_of_modes(); ++k) lm += coordinates[d.offset + k] * d.laplacian_modes[k];
     const Eigen::Matrix3d covariance = gather(d, positions).transpose() * lm;
     rotations[c] = closest_rotation(covariance);
   }
+}
+
+// The linear map an edge's target vector goes through: the cluster's rotation,
+// or the average of its ends' rotations.
+Eigen::Matrix3d Embedding_solver::Impl::edge_transform(int c, const Weighted_edge& e) const
+{
+  if(options.rotations == Rotations::per_vertex) return 0.5 * (vertex_rotations[c][e.i] + vertex_rotations[c][e.j]);
+  return rotations[c];
 }
 
 Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
@@ -594,8 +641,10 @@ const Point_matrix& Embedding_solver::Impl::materialized_positions()
   return positions;
 }
 
-// The reference: the whole quadratic in (x, y, z, lambda) assembled and
-// factored afresh. Slow, simple, and what the Schur path must agree with.
+// The reference: the whole quadratic in (x, y, z, lambda), assembled edge by
+// edge (not from the cluster Laplacians the fast paths use) and factored
+// afresh. Slow, simple, and what the fast paths must agree with. With edge
+// transforms T_e, targets t_e = T_e (m_e + sum_k lambda_k b_ke).
 void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda)
 {
   const int dm = total_modes, size = 3 * n + dm;
@@ -605,32 +654,45 @@ void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd
       for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * n + it.row(), a * n + it.col(), it.value());
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
   for(int a = 0; a < 3; ++a) rhs.segment(a * n, n) = b0.col(a);
+  Eigen::MatrixXd lambda_block = coupling;
   for(std::size_t c = 0; c < clusters.size(); ++c)
   {
     const Cluster_data& d = clusters[c];
-    const Eigen::MatrixXd rotated_mean = d.laplacian_mean * rotations[c].transpose();
-    for(std::size_t i = 0; i < d.vertices.size(); ++i)
-      for(int a = 0; a < 3; ++a) rhs[a * n + d.vertices[i]] += rotated_mean(i, a);
-    for(int k = 0; k < d.number_of_modes(); ++k)
+    const int modes = d.number_of_modes();
+    std::vector<Eigen::Vector3d> mode_edges(modes);
+    for(const Weighted_edge& e : d.edges)
     {
-      const int row = 3 * n + d.offset + k;
-      const Eigen::MatrixXd column = d.laplacian_modes[k] * rotations[c].transpose();
-      for(std::size_t i = 0; i < d.vertices.size(); ++i)
+      const Eigen::Matrix3d transform = edge_transform(static_cast<int>(c), e);
+      const int gi = d.vertices[e.i], gj = d.vertices[e.j];
+      const Eigen::Vector3d u = transform * (d.mean.row(e.i) - d.mean.row(e.j)).transpose();
+      for(int a = 0; a < 3; ++a)
+      {
+        rhs[a * n + gi] += e.w * u[a];
+        rhs[a * n + gj] -= e.w * u[a];
+      }
+      for(int k = 0; k < modes; ++k)
+      {
+        mode_edges[k] = transform * (d.modes[k].row(e.i) - d.modes[k].row(e.j)).transpose();
+        const int row = 3 * n + d.offset + k;
         for(int a = 0; a < 3; ++a)
-          if(column(i, a) != 0.)
-          {
-            t.emplace_back(row, a * n + d.vertices[i], -column(i, a));
-            t.emplace_back(a * n + d.vertices[i], row, -column(i, a));
-          }
-      for(int l = 0; l < d.number_of_modes(); ++l)
-        t.emplace_back(row, 3 * n + d.offset + l, (d.modes[k].array() * d.laplacian_modes[l].array()).sum());
-      t.emplace_back(row, row, d.prior[k]);
-      rhs[row] = -(d.modes[k].array() * d.laplacian_mean.array()).sum();
+        {
+          const double value = e.w * mode_edges[k][a];
+          t.emplace_back(row, a * n + gi, -value);
+          t.emplace_back(a * n + gi, row, -value);
+          t.emplace_back(row, a * n + gj, value);
+          t.emplace_back(a * n + gj, row, value);
+        }
+        rhs[row] -= e.w * mode_edges[k].dot(u);
+      }
+      for(int k = 0; k < modes; ++k)
+        for(int l = 0; l < modes; ++l)
+          lambda_block(d.offset + k, d.offset + l) += e.w * mode_edges[k].dot(mode_edges[l]);
     }
+    for(int k = 0; k < modes; ++k) lambda_block(d.offset + k, d.offset + k) += d.prior[k];
   }
   for(int a = 0; a < dm; ++a)
     for(int b = 0; b < dm; ++b)
-      if(coupling(a, b) != 0.) t.emplace_back(3 * n + a, 3 * n + b, coupling(a, b));
+      if(lambda_block(a, b) != 0.) t.emplace_back(3 * n + a, 3 * n + b, lambda_block(a, b));
   Sparse k(size, size);
   k.setFromTriplets(t.begin(), t.end());
   Eigen::SimplicialLDLT<Sparse> ldlt(k);
@@ -649,9 +711,11 @@ double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::Vec
   {
     if(only >= 0 && int(c) != only) continue;
     const Cluster_data& d = clusters[c];
-    const Point_matrix m = target_shape(d, lambda) * rotations[c].transpose();
+    const Point_matrix m = target_shape(d, lambda);
     for(const Weighted_edge& edge : d.edges)
-      e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])) - (m.row(edge.i) - m.row(edge.j))).squaredNorm();
+      e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])).transpose() -
+                     edge_transform(static_cast<int>(c), edge) * (m.row(edge.i) - m.row(edge.j)).transpose())
+                      .squaredNorm();
     for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
   }
   if(only >= 0) return e;

@@ -171,6 +171,9 @@ void ensure_parent_directory(const std::string& path);
 Command make_synth_command();
 Command make_learn_command();
 Command make_info_command();
+Command make_deform_command();
+Command make_symmetrize_command();
+Command make_caricature_command();
 
 // ---- shared by learn and info ----------------------------------------------
 

@@ -23,6 +23,9 @@ const std::vector<mpm::Command>& all_commands()
     mpm::make_synth_command(),
     mpm::make_learn_command(),
     mpm::make_info_command(),
+    mpm::make_deform_command(),
+    mpm::make_symmetrize_command(),
+    mpm::make_caricature_command(),
   };
   return commands;
 }

@@ -311,3 +311,35 @@ TEST(Caricature, factor_two_doubles_the_distance_from_the_mean_within_the_subspa
     EXPECT_LT(worst, bound) << family_name(family);
   }
 }
+
+TEST(Embedding_solver, per_vertex_rotations_keep_rest_and_rigid_motions_and_decrease_the_energy)
+{
+  const Learned& l = learned(Synthetic_family::hand);
+  Embedding_options options;
+  options.rotations = Rotations::per_vertex;
+  options.max_iterations = 20;
+  const std::vector<int> handles = handle_per_part(l.truth);
+  const Point_matrix& rest = l.truth.mesh.mesh.points;
+  {
+    Embedding_solver solver(make_deformation_problem(l.model), options);
+    solver.set_handles(handles, rows(rest, handles));
+    solver.solve();
+    EXPECT_LT((solver.positions() - rest).norm(), 1e-9 * rest.norm());
+  }
+  {
+    Rigid_motion m;
+    m.rotation = Eigen::AngleAxisd(0.4, Eigen::Vector3d(0, 1, 1).normalized()).toRotationMatrix();
+    m.translation = Eigen::Vector3d(1, 2, 3);
+    Embedding_solver solver(make_deformation_problem(l.model), options);
+    solver.set_handles(handles, rows(m.apply(rest), handles));
+    solver.solve();
+    EXPECT_LT((solver.positions() - m.apply(rest)).norm(), 1e-8 * rest.norm());
+  }
+  Embedding_solver solver(make_deformation_problem(l.model), options);
+  const Point_matrix pose = l.truth.draw_pose(3);
+  solver.set_handles(handles, rows(pose, handles));
+  const Solve_report report = solver.solve();
+  for(std::size_t i = 1; i < report.energies.size(); ++i)
+    EXPECT_LE(report.energies[i], report.energies[i - 1] * (1 + 1e-9));
+  EXPECT_TRUE(solver.positions().allFinite());
+}

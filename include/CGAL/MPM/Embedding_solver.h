@@ -39,10 +39,22 @@ enum class Global_step
 };
 
 /// \ingroup PkgMPMRef
+/// How many rotations a cluster has.
+enum class Rotations
+{
+  per_cluster, ///< one rotation per cluster (the paper found it best; fast paths apply)
+  /// One rotation per cluster vertex, edges rotated by the average of their
+  /// ends' rotations (the paper's equation 3.4). Solved by the direct
+  /// global step whatever `global_step` says.
+  per_vertex
+};
+
+/// \ingroup PkgMPMRef
 /// Options of the embedding solver.
 struct Embedding_options
 {
   Global_step global_step = Global_step::reduced; ///< fast path or reference
+  Rotations rotations = Rotations::per_cluster;   ///< rotation variables
   Sparse_solver sparse_solver = Sparse_solver::simplicial_ldlt; ///< factorization
   /// Handle stiffness relative to the mean diagonal of the elastic matrix.
   double handle_weight = 100.;
@@ -58,7 +70,7 @@ struct Embedding_options
   /// increases.
   int anderson_history = 5;
   int max_iterations = 100;  ///< iteration cap of `solve()`
-  double tolerance = 1e-8;   ///< stop when the energy decreases by less than this fraction
+  double tolerance = 1e-6;   ///< stop when the energy decreases by less than this fraction
 };
 
 /// \ingroup PkgMPMRef
