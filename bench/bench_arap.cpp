@@ -2,53 +2,66 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The ARAP baseline (CGAL::Surface_mesh_deformation): time of one
 // local/global iteration and of the factorization, on the paper-scale models
-// with handles pulling towards a held-out pose. The second argument is the
-// number of farthest-point handles.
+// with handles pulling towards a held-out pose. The last argument is the
+// number of farthest-point handles. Names match bench_mpm.cpp, so rows read
+// side by side: BM_iteration/hand_23k/arap/handles:16 next to
+// BM_iteration/hand_23k/mpm_schur_ldlt/handles:16.
 #include "bench_models.h"
 
 #include <CGAL/MPM/Arap_deformation.h>
 
 #include <benchmark/benchmark.h>
 
+#include <string>
+
 namespace {
 
 using CGAL::MPM::Arap_deformation;
 using mpm_bench::Bench_model;
 
-void set_vertex_counter(benchmark::State& state, Bench_model model)
+void set_counters(benchmark::State& state, Bench_model model, const mpm_bench::Memory_probe& memory)
 {
   state.counters["vertices"] = mpm_bench::synthetic_model(model).mesh.mesh.number_of_vertices();
+  if(memory.extra_peak_mb() >= 0.) state.counters["peak_MB"] = memory.extra_peak_mb();
 }
 
 void BM_arap_iteration(benchmark::State& state, Bench_model model)
 {
+  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const mpm_bench::Memory_probe memory;
   Arap_deformation arap(mpm_bench::synthetic_model(model).mesh.mesh);
-  arap.set_handles(mpm_bench::farthest_handles(model, int(state.range(0))));
+  arap.set_handles(handles);
   arap.preprocess();
   for(auto _ : state) arap.deform_one_iteration();
-  set_vertex_counter(state, model);
+  set_counters(state, model, memory);
 }
 
 void BM_arap_preprocess(benchmark::State& state, Bench_model model)
 {
+  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const mpm_bench::Memory_probe memory;
   for(auto _ : state) {
     state.PauseTiming();
     // A fresh object each time: a factorization is cached until the handle vertices change.
     Arap_deformation arap(mpm_bench::synthetic_model(model).mesh.mesh);
-    arap.set_handles(mpm_bench::farthest_handles(model, int(state.range(0))));
+    arap.set_handles(handles);
     state.ResumeTiming();
     arap.preprocess();
   }
-  set_vertex_counter(state, model);
+  set_counters(state, model, memory);
 }
 
-} // namespace
+const bool registered = [] {
+  for(Bench_model model : {Bench_model::hand_3k, Bench_model::hand_23k, Bench_model::spider_66k}) {
+    const std::string name = mpm_bench::model_name(model);
+    auto* iteration = benchmark::RegisterBenchmark(("BM_iteration/" + name + "/arap").c_str(), BM_arap_iteration, model)
+                          ->ArgName("handles")->Unit(benchmark::kMillisecond);
+    if(model != Bench_model::hand_3k) iteration->Arg(1);
+    iteration->Arg(mpm_bench::bench_handles);
+    benchmark::RegisterBenchmark(("BM_factor/" + name + "/arap").c_str(), BM_arap_preprocess, model)
+        ->ArgName("handles")->Arg(mpm_bench::bench_handles)->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}();
 
-BENCHMARK_CAPTURE(BM_arap_iteration, hand_23k, Bench_model::hand_23k)
-    ->ArgName("handles")->Arg(1)->Arg(16)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_arap_iteration, spider_66k, Bench_model::spider_66k)
-    ->ArgName("handles")->Arg(1)->Arg(16)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_arap_preprocess, hand_23k, Bench_model::hand_23k)
-    ->ArgName("handles")->Arg(16)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_arap_preprocess, spider_66k, Bench_model::spider_66k)
-    ->ArgName("handles")->Arg(16)->Unit(benchmark::kMillisecond);
+} // namespace

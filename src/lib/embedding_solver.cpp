@@ -904,7 +904,8 @@ Solve_report Embedding_solver::solve()
     }
   }
   Solve_report report;
-  double previous = energy();
+  // Implicit positions have their energy from the blocks, without a back-substitution.
+  double previous = d.implicit ? d.reduced_energy(d.coordinates, d.w_blocks) : energy();
 
   // The accelerated state: rotations and coordinates when positions are
   // implicit (so that iterations stay independent of the vertex count),

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "editing_common.h"
 
+#include <CGAL/MPM/Editing.h>
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
@@ -123,11 +124,14 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   const int example = static_cast<int>(args.integer("example", 0));
 
   context.progress.update("loading " + model_path, 0.);
-  const Morphable_part_model model = load_model(model_path);
+  Morphable_part_model model = load_model(model_path);
   if(example >= static_cast<int>(model.examples.size()))
     throw Input_error(model_path, "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " example" +
                         (model.examples.size() == 1 ? "" : "s") + ")");
+  // Another pose of the example's mesh becomes the state the edit starts from.
+  const std::string pose_file = args.text("mesh");
+  if(!pose_file.empty()) set_example_pose(model, example, read_mesh_file(pose_file).mesh, pose_file);
   const Training_example& input = model.examples[example];
   const std::string handles_file = args.text("handles");
   const Handle_set handles = handles_file.empty() ? Handle_set() : read_handles(handles_file, input.mesh.points);
@@ -219,6 +223,8 @@ Command make_editing_command(const Editing_command& editing)
   const std::vector<Option_spec> shared = {
     {"output", 'o', Value_kind::text, "OUT", "", "mesh to write: .off, .obj or .ply (required)"},
     {"example", 0, Value_kind::integer, "N", "0", "training example to edit", 0, INT_MAX},
+    {"mesh", 0, Value_kind::text, "M.off", "none",
+     "another pose of the example's mesh (same triangles) to start from"},
     {"handles", 0, Value_kind::text, "H.json", handles_required ? "" : "none",
      handles_required ? "handle file (required)" : "handle file"},
     {"iterations", 0, Value_kind::integer, "N", std::to_string(defaults.max_iterations),

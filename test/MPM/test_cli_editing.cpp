@@ -367,3 +367,25 @@ TEST_F(Cli_editing, HelpListsTheSharedOptions)
 }
 
 } // namespace
+
+// --mesh starts the edit from another pose of the example's mesh: with no
+// handle displacement (caricature factor 1) that pose comes back unchanged;
+// a mesh of another connectivity is refused naming the file.
+TEST_F(Cli_editing, MeshOptionStartsFromAnotherPoseAndRefusesOtherMeshes)
+{
+  const std::string pose = path("pose");
+  ASSERT_EQ(run("synth hand --vertices 2500 --pose-seed 4 -o " + quote(pose)).status, 0);
+  const Run_result r = run("caricature " + quote(model()) + " --factor 1 --mesh " + quote(pose + ".off") + " -o " +
+                           quote(path("p.off")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Point_matrix expected = CGAL::MPM::read_mesh_file(pose + ".off").mesh.points;
+  const Point_matrix got = CGAL::MPM::read_mesh_file(path("p.off")).mesh.points;
+  EXPECT_LT(max_distance(got, expected), 1e-8 * diagonal(expected));
+  EXPECT_GT(max_distance(expected, rest()), 1e-3 * diagonal(expected));
+
+  const std::string other = path("other");
+  ASSERT_EQ(run("synth hand --vertices 1500 -o " + quote(other)).status, 0);
+  expect_error(run("caricature " + quote(model()) + " --factor 1 --mesh " + quote(other + ".off") + " -o " +
+                   quote(path("x.off"))),
+               1, {"other.off", "vertices"});
+}

@@ -24,6 +24,16 @@ namespace MPM {
 Embedding_problem make_deformation_problem(const Morphable_part_model& model, int example = 0);
 
 /// \ingroup PkgMPMRef
+/// Makes `mesh` (a new pose of training example `example`: the same
+/// triangles, other positions) the example's rest state: each instance's and
+/// each pair geometry's coordinates and placement are refitted to it, so that
+/// the editing problems start from that pose. Throws `Input_error` naming
+/// `mesh_name` when the vertex count or a triangle differs from the
+/// example's, or a coordinate is not finite; `model` is unchanged then.
+void set_example_pose(Morphable_part_model& model, int example, const Indexed_mesh& mesh,
+                      const std::string& mesh_name);
+
+/// \ingroup PkgMPMRef
 /// Options of partial symmetrization.
 struct Symmetrization_options
 {

@@ -1,0 +1,199 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The MPM solver on the paper-scale models (design.md, section 7), named to
+// read side by side with the ARAP baseline of bench_arap.cpp:
+//   BM_iteration/<model>/mpm_<step>_<solver>/handles:16  one iterate()
+//   BM_factor/<model>/mpm_<step>_<solver>/handles:16     solver construction + set_handles + first iterate()
+//   BM_frame/<model>/mpm_<step>_<solver>/handles:16      drag one handle by 1% of the bbox diagonal, solve(), positions()
+//   BM_learn/<model>                                     learn_morphable_part_model()
+// <step> is every Global_step (direct only on the 3k hand: it refactors every
+// iteration), <solver> is ldlt (Eigen SimplicialLDLT) or cholmod (when the
+// library is built with CHOLMOD). Handles: 16 farthest-point handles pulling
+// towards a held-out pose, the same as ARAP's. Counters: vertices, clusters,
+// modes, peak_MB (peak resident memory above the start of the benchmark).
+#include "bench_models.h"
+
+#include <CGAL/MPM/Embedding_solver.h>
+
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Core>
+
+#include <exception>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using CGAL::MPM::Embedding_options;
+using CGAL::MPM::Embedding_problem;
+using CGAL::MPM::Embedding_solver;
+using CGAL::MPM::Global_step;
+using CGAL::MPM::Sparse_solver;
+using mpm_bench::Bench_model;
+
+// Global_step::reduced is being added to the library: use it when the header has it.
+template <class Step, class = void>
+struct Has_reduced_step : std::false_type
+{};
+template <class Step>
+struct Has_reduced_step<Step, std::void_t<decltype(Step::reduced)>> : std::true_type
+{};
+
+template <class Step>
+std::vector<std::pair<std::string, Step>> global_steps()
+{
+  std::vector<std::pair<std::string, Step>> steps{{"direct", Step::direct}, {"schur", Step::schur}};
+  if constexpr(Has_reduced_step<Step>::value) steps.emplace_back("reduced", Step::reduced);
+  return steps;
+}
+
+std::vector<std::pair<std::string, Sparse_solver>> sparse_solvers()
+{
+  std::vector<std::pair<std::string, Sparse_solver>> solvers{{"ldlt", Sparse_solver::simplicial_ldlt}};
+#ifdef CGAL_MPM_HAS_CHOLMOD
+  solvers.emplace_back("cholmod", Sparse_solver::cholmod);
+#endif
+  return solvers;
+}
+
+Embedding_options options_of(Global_step step, Sparse_solver solver)
+{
+  Embedding_options options;
+  options.global_step = step;
+  options.sparse_solver = solver;
+  return options;
+}
+
+void set_counters(benchmark::State& state, Bench_model model, const mpm_bench::Memory_probe& memory)
+{
+  const Embedding_problem& problem = mpm_bench::deformation_problem(model);
+  state.counters["vertices"] = problem.mesh.number_of_vertices();
+  state.counters["clusters"] = double(problem.clusters.size());
+  state.counters["modes"] = mpm_bench::number_of_modes(problem);
+  if(memory.extra_peak_mb() >= 0.) state.counters["peak_MB"] = memory.extra_peak_mb();
+}
+
+double bbox_diagonal(const CGAL::MPM::Point_matrix& p)
+{
+  return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+}
+
+void BM_iteration(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
+{
+  const Embedding_problem& problem = mpm_bench::deformation_problem(model);
+  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const mpm_bench::Memory_probe memory;
+  try {
+    Embedding_solver mpm(problem, options_of(step, solver));
+    mpm.set_handles(handles.vertices, handles.targets);
+    mpm.iterate(); // anything done lazily on the first iteration is factorization, timed below
+    for(auto _ : state) benchmark::DoNotOptimize(mpm.iterate());
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  set_counters(state, model, memory);
+}
+
+void BM_factor(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
+{
+  const Embedding_problem& problem = mpm_bench::deformation_problem(model);
+  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const mpm_bench::Memory_probe memory;
+  try {
+    for(auto _ : state) {
+      std::optional<Embedding_solver> mpm;
+      mpm.emplace(problem, options_of(step, solver));
+      mpm->set_handles(handles.vertices, handles.targets);
+      benchmark::DoNotOptimize(mpm->iterate());
+      state.PauseTiming();
+      mpm.reset();
+      state.ResumeTiming();
+    }
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  set_counters(state, model, memory);
+}
+
+// One display frame of an interactive drag: from a state converged to the
+// handle targets, the first handle (the one farthest from the centroid)
+// moves by 1% of the bounding-box diagonal, back and forth every 10 frames.
+void BM_frame(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
+{
+  const Embedding_problem& problem = mpm_bench::deformation_problem(model);
+  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const mpm_bench::Memory_probe memory;
+  double iterations = 0., converged = 0.;
+  try {
+    Embedding_solver mpm(problem, options_of(step, solver));
+    mpm.set_handles(handles.vertices, handles.targets);
+    mpm.solve();
+    benchmark::DoNotOptimize(mpm.positions().data());
+    CGAL::MPM::Point_matrix targets = handles.targets;
+    const Eigen::RowVector3d drag = 0.01 * bbox_diagonal(problem.mesh.points) * Eigen::RowVector3d(1., 1., 1.).normalized();
+    int frame = 0;
+    for(auto _ : state) {
+      targets.row(0) += (frame++ / 10) % 2 == 0 ? drag : Eigen::RowVector3d(-drag);
+      mpm.set_handles(handles.vertices, targets);
+      const CGAL::MPM::Solve_report report = mpm.solve();
+      benchmark::DoNotOptimize(mpm.positions().data());
+      iterations += report.iterations;
+      converged += report.converged ? 1. : 0.;
+    }
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
+  state.counters["converged"] = benchmark::Counter(converged, benchmark::Counter::kAvgIterations);
+  set_counters(state, model, memory);
+}
+
+void BM_learn(benchmark::State& state, Bench_model model)
+{
+  const CGAL::MPM::Synthetic_model& s = mpm_bench::synthetic_model(model);
+  mpm_bench::deformation_problem(model); // for the counters, outside the memory probe
+  const mpm_bench::Memory_probe memory;
+  for(auto _ : state) {
+    CGAL::MPM::Morphable_part_model learned = CGAL::MPM::learn_morphable_part_model(s.mesh, s.annotation);
+    benchmark::DoNotOptimize(learned.types.data());
+    state.PauseTiming(); // not the destruction
+    { const CGAL::MPM::Morphable_part_model dropped = std::move(learned); }
+    state.ResumeTiming();
+  }
+  set_counters(state, model, memory);
+}
+
+const bool registered = [] {
+  const std::vector<Bench_model> models{Bench_model::hand_3k, Bench_model::hand_23k, Bench_model::spider_66k};
+  using Function = void (*)(benchmark::State&, Bench_model, Global_step, Sparse_solver);
+  const std::pair<const char*, Function> kinds[] = {{"BM_iteration", BM_iteration}, {"BM_factor", BM_factor},
+                                                    {"BM_frame", BM_frame}};
+  for(const auto& [kind, function] : kinds)
+    for(Bench_model model : models)
+      for(const auto& [step_name, step] : global_steps<Global_step>()) {
+        // The direct step assembles and factors the whole system every iteration: a
+        // reference point on the small hand only (and no frames: they take seconds).
+        if(step == Global_step::direct && (model != Bench_model::hand_3k || function == BM_frame)) continue;
+        for(const auto& [solver_name, solver] : sparse_solvers()) {
+          const std::string name =
+              std::string(kind) + "/" + mpm_bench::model_name(model) + "/mpm_" + step_name + "_" + solver_name;
+          auto* b = benchmark::RegisterBenchmark(name.c_str(), function, model, step, solver)
+                        ->ArgName("handles")->Arg(mpm_bench::bench_handles)->Unit(benchmark::kMillisecond);
+          // A frame starts from a converged state, which costs many frames to reach: set it up once.
+          if(function == BM_frame) b->Iterations(20);
+        }
+      }
+  for(Bench_model model : {Bench_model::hand_23k, Bench_model::spider_66k})
+    benchmark::RegisterBenchmark((std::string("BM_learn/") + mpm_bench::model_name(model)).c_str(), BM_learn, model)
+        ->Unit(benchmark::kMillisecond);
+  return true;
+}();
+
+} // namespace
