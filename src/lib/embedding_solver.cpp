@@ -26,6 +26,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 
 namespace CGAL {
 namespace MPM {
@@ -138,6 +139,16 @@ struct Embedding_solver::Impl
   std::vector<int> handle_vertices;
   Point_matrix handle_targets;
   bool factored = false;
+  // A change of handle vertices that keeps the handled pieces is a low-rank
+  // (Woodbury) update of the factored block: A = A_f + U diag(w) U^T with U
+  // the changed vertices, A^-1 = A_f^-1 - C K^-1 C^T, C = A_f^-1 U,
+  // K = diag(1/w) + U^T C.
+  std::vector<int> factored_handles;
+  std::vector<int> update_vertices;
+  Eigen::VectorXd update_weights;
+  Eigen::MatrixXd update_columns;      // C, n x k
+  Eigen::MatrixXd capacitance_inverse; // K^-1
+  std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base; // blocks of A_f
   bool handle_terms_ready = false;
   Eigen::VectorXd anchor;         // per-vertex anchor weight
   Sparse system;                  // A11
@@ -179,6 +190,9 @@ struct Embedding_solver::Impl
   void prepare_cluster(const Cluster& c, double sigma_sub, int index);
   void compute_anchor();
   void factor();
+  bool update_handle_set(const std::vector<int>& vertices);
+  void apply_update();
+  Eigen::MatrixXd solve_a11(const Eigen::MatrixXd& rhs) const;
   void prepare_handle_terms();
   Eigen::MatrixXd scatter(const Cluster_data& c, const Point_matrix& local) const;
   Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
@@ -399,6 +413,10 @@ void Embedding_solver::Impl::factor()
     throw Computation_error("embedding: factorization of the vertex block failed (a cluster may be degenerate)");
   factored = true;
   handle_terms_ready = false;
+  factored_handles = handle_vertices;
+  update_vertices.clear();
+  update_weights.resize(0);
+  update_columns.resize(n, 0);
 
   if(options.global_step == Global_step::direct) return;
   const int dm = total_modes, nc = static_cast<int>(clusters.size());
@@ -440,7 +458,7 @@ void Embedding_solver::Impl::factor()
       else
         rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean);
     }
-    const Eigen::MatrixXd solved = solver->solve(rhs);
+    const Eigen::MatrixXd solved = solver->solve(rhs); // of A_f: the update is applied below
     for(const Cluster_data& c : clusters)
     {
       const int ci = static_cast<int>(&c - clusters.data());
@@ -459,7 +477,107 @@ void Embedding_solver::Impl::factor()
         }
       }
     }
+  }  h_base = h_blocks;
+  g_base = g_blocks;
+  plm_base = plm_blocks;
+  qlm_base = qlm_blocks;
+}
+
+Eigen::MatrixXd Embedding_solver::Impl::solve_a11(const Eigen::MatrixXd& rhs) const
+{
+  Eigen::MatrixXd x = solver->solve(rhs);
+  if(!update_vertices.empty())
+  {
+    Eigen::MatrixXd at_updates(update_vertices.size(), x.cols());
+    for(std::size_t u = 0; u < update_vertices.size(); ++u) at_updates.row(u) = x.row(update_vertices[u]);
+    x -= update_columns * (capacitance_inverse * at_updates);
   }
+  return x;
+}
+
+// Accepts `vertices` as a low-rank change of the factored handle set when the
+// same pieces stay handled and few vertices change; false asks for a refactorization.
+bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
+{
+  constexpr std::size_t max_update = 32;
+  if(!factored) return false;
+  const auto pieces = [&](const std::vector<int>& h) {
+    std::set<int> p;
+    for(int v : h) p.insert(component[v]);
+    return p;
+  };
+  if(pieces(vertices) != pieces(factored_handles)) return false;
+  const std::set<int> now(vertices.begin(), vertices.end()), before(factored_handles.begin(), factored_handles.end());
+  std::vector<int> changed;
+  std::vector<double> weights;
+  const double w = options.handle_weight * mean_diagonal;
+  for(int v : now)
+    if(!before.count(v))
+    {
+      changed.push_back(v);
+      weights.push_back(w);
+    }
+  for(int v : before)
+    if(!now.count(v))
+    {
+      changed.push_back(v);
+      weights.push_back(-w);
+    }
+  if(changed.size() > max_update) return false;
+  update_vertices = changed;
+  update_weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), weights.size());
+  apply_update();
+  return true;
+}
+
+void Embedding_solver::Impl::apply_update()
+{
+  const int k = static_cast<int>(update_vertices.size());
+  if(k == 0)
+  {
+    update_columns.resize(n, 0);
+    h_blocks = h_base;
+    g_blocks = g_base;
+    plm_blocks = plm_base;
+    qlm_blocks = qlm_base;
+    return;
+  }
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, k);
+  for(int u = 0; u < k; ++u) unit(update_vertices[u], u) = 1.;
+  update_columns = solver->solve(unit);
+  Eigen::MatrixXd capacitance(k, k);
+  for(int u = 0; u < k; ++u) capacitance.row(u) = update_columns.row(update_vertices[u]);
+  capacitance.diagonal() += update_weights.cwiseInverse();
+  capacitance_inverse = capacitance.inverse();
+  if(options.global_step == Global_step::direct) return;
+
+  // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
+  // X^T A^-1 Y = X^T A_f^-1 Y - T_X^T K^-1 T_Y.
+  const int dm = total_modes, nc = static_cast<int>(clusters.size());
+  std::vector<Eigen::MatrixXd> t_mean(nc), t_mode(dm);
+  for(int c = 0; c < nc; ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    const Eigen::MatrixXd local = gather(d, update_columns);
+    t_mean[c] = local.transpose() * d.laplacian_mean;
+    for(int m = 0; m < d.number_of_modes(); ++m) t_mode[d.offset + m] = local.transpose() * d.laplacian_modes[m];
+  }
+  const auto correction = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) -> Eigen::Matrix3d {
+    return x.transpose() * (capacitance_inverse * y);
+  };
+  for(int a = 0; a < dm; ++a)
+  {
+    for(int b = 0; b < dm; ++b)
+      h_blocks[std::size_t(a) * dm + b] = h_base[std::size_t(a) * dm + b] - correction(t_mode[a], t_mode[b]);
+    for(int d = 0; d < nc; ++d)
+    {
+      g_blocks[std::size_t(a) * nc + d] = g_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
+      qlm_blocks[std::size_t(a) * nc + d] = qlm_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
+    }
+  }
+  for(int d = 0; d < nc; ++d)
+    for(int c = 0; c < nc; ++c)
+      plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
 }
 
 void Embedding_solver::Impl::prepare_handle_terms()
@@ -477,7 +595,7 @@ void Embedding_solver::Impl::prepare_handle_terms()
     handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
   if(options.global_step != Global_step::direct)
   {
-    const Eigen::MatrixXd z = solver->solve(b0);
+    const Eigen::MatrixXd z = solve_a11(b0);
     b0_z = (b0.array() * z.array()).sum();
     z_blocks.assign(total_modes, Eigen::Matrix3d::Zero());
     zlm_blocks.assign(clusters.size(), Eigen::Matrix3d::Zero());
@@ -566,7 +684,7 @@ Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambd
     const Eigen::MatrixXd rotated = lm * rotations[c].transpose();
     for(std::size_t i = 0; i < d.vertices.size(); ++i) rhs.row(d.vertices[i]) += rotated.row(i);
   }
-  return solver->solve(rhs);
+  return solve_a11(rhs);
 }
 
 // W[c][d] = X_c^T A11^-1 X_d at [c * nc + d], and X_c^T Z at [nc * nc + c].
@@ -652,6 +770,8 @@ void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd
   for(int a = 0; a < 3; ++a)
     for(int k = 0; k < system.outerSize(); ++k)
       for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * n + it.row(), a * n + it.col(), it.value());
+  for(std::size_t u = 0; u < update_vertices.size(); ++u)
+    for(int a = 0; a < 3; ++a) t.emplace_back(a * n + update_vertices[u], a * n + update_vertices[u], update_weights[u]);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
   for(int a = 0; a < 3; ++a) rhs.segment(a * n, n) = b0.col(a);
   Eigen::MatrixXd lambda_block = coupling;
@@ -765,7 +885,7 @@ void Embedding_solver::set_handles(const std::vector<int>& vertices, const Point
     seen[vertices[h]] = true;
     if(!targets.row(h).allFinite()) throw Input_error("handles", element, "target is not finite");
   }
-  if(vertices != d.handle_vertices) d.factored = false;
+  if(vertices != d.handle_vertices && !d.update_handle_set(vertices)) d.factored = false;
   d.handle_vertices = vertices;
   d.handle_targets = targets;
   d.handle_targets.rowwise() -= d.origin;
