@@ -13,6 +13,10 @@
 #include <new>
 #include <sstream>
 
+namespace mpm { Command make_compare_command(); } // cmd_compare.cpp
+namespace mpm { Command make_assemble_command(); Command make_graph_command(); } // cmd_assemble.cpp
+namespace mpm { Command make_spawn_command(); } // cmd_spawn.cpp
+
 namespace {
 
 // The command table: add a subcommand by writing cmd_NAME.cpp with a
@@ -26,6 +30,10 @@ const std::vector<mpm::Command>& all_commands()
     mpm::make_deform_command(),
     mpm::make_symmetrize_command(),
     mpm::make_caricature_command(),
+    mpm::make_compare_command(),
+    mpm::make_graph_command(),
+    mpm::make_assemble_command(),
+    mpm::make_spawn_command(),
   };
   return commands;
 }

@@ -1,0 +1,189 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Clusters of a part graph: one per part instance, one per docking (pair
+// geometry). Used by the editing problems and by assembly.
+#include <CGAL/MPM/internal/Part_graph_problem.h>
+
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+
+Point_matrix gather_rows(const Point_matrix& points, const std::vector<int>& vertices)
+{
+  Point_matrix p(vertices.size(), 3);
+  for(std::size_t i = 0; i < vertices.size(); ++i) p.row(i) = points.row(vertices[i]);
+  return p;
+}
+
+Point_matrix to_space_frame(const Rigid_motion& motion, const Point_matrix& points)
+{
+  Rigid_motion inverse;
+  inverse.rotation = motion.rotation.transpose();
+  inverse.translation = -(inverse.rotation * motion.translation);
+  return inverse.apply(points);
+}
+
+bool seam_is_collinear(const Point_matrix& p)
+{
+  if(p.rows() < 3) return true;
+  const Eigen::Vector3d spread = Eigen::JacobiSVD<Point_matrix>(p.rowwise() - p.colwise().mean()).singularValues();
+  return !(spread[1] > 1e-3 * spread[0]);
+}
+
+Point_matrix pair_target(const Docking_rule& rule, const Point_matrix& first, Point_matrix second,
+                         const Point_matrix& second_rest, const Rigid_motion& pair_motion, const Point_matrix& rest)
+{
+  if(!rule.seam.empty())
+  {
+    Point_matrix from(rule.seam.size(), 3), to(rule.seam.size(), 3);
+    for(std::size_t k = 0; k < rule.seam.size(); ++k)
+    {
+      from.row(k) = second.row(rule.seam[k].second);
+      to.row(k) = first.row(rule.seam[k].first);
+    }
+    if(!seam_is_collinear(from))
+      second = fit_rigid_motion(from, to).apply(second);
+    else
+    {
+      second = fit_rigid_motion(second, second_rest).apply(second);
+      Point_matrix seam(rule.seam.size(), 3);
+      for(std::size_t k = 0; k < rule.seam.size(); ++k) seam.row(k) = second.row(rule.seam[k].second);
+      second.rowwise() += to.colwise().mean() - seam.colwise().mean();
+    }
+  }
+  Point_matrix target(rule.points.size(), 3);
+  for(std::size_t k = 0; k < rule.points.size(); ++k)
+    target.row(k) = (rule.points[k].side == 0 ? first : second).row(rule.points[k].local);
+  return to_space_frame(pair_motion, fit_rigid_motion(target, rest).apply(target));
+}
+
+Embedding_problem make_part_graph_problem(const Morphable_part_model& model, const Part_graph& graph,
+                                          const Indexed_mesh& mesh, const Part_target_policy& policy,
+                                          const Pair_sigma_policy& pair_sigmas)
+{
+  Embedding_problem problem;
+  problem.mesh = mesh;
+  problem.sigma_sub = model.parameters.sigma_sub;
+
+  // Seam vertices of each node: where its part cluster fades out.
+  std::vector<std::set<int>> seams(graph.nodes.size());
+  for(const Part_edge& e : graph.edges)
+  {
+    const Docking_rule& rule = model.rules[e.rule];
+    for(const auto& [l0, l1] : rule.seam)
+    {
+      seams[e.first].insert(l0);
+      seams[e.second].insert(l1);
+    }
+  }
+
+  // Each part's target shape, placed where the part rests: pair targets are
+  // assembled from them, so that parts and pairs ask for the same shape.
+  std::vector<Point_matrix> placed_targets;
+  for(std::size_t i = 0; i < graph.nodes.size(); ++i)
+  {
+    const Part_node& node = graph.nodes[i];
+    const Part_type& type = model.types[node.type];
+    Cluster c;
+    c.name = "part " + std::to_string(i) + " (" + type.name +
+             (node.label >= 0 ? ", label " + std::to_string(node.label) : std::string()) + ")";
+    c.vertices = node.vertices;
+    c.triangles = type.triangles;
+    c.edges = type.edges;
+    const Part_target t = policy(static_cast<int>(i), type.space, node.coordinates,
+                                 to_space_frame(node.motion, gather_rows(mesh.points, node.vertices)), type.name);
+    c.mean = t.mean;
+    c.modes = type.space.modes;
+    c.sigmas = t.sigmas;
+    c.border.assign(seams[i].begin(), seams[i].end());
+    c.sigma_bound = model.parameters.sigma_bound;
+    placed_targets.push_back(node.motion.apply(t.mean));
+    problem.clusters.push_back(std::move(c));
+  }
+
+  for(std::size_t i = 0; i < graph.edges.size(); ++i)
+  {
+    const Part_edge& e = graph.edges[i];
+    const Docking_rule& rule = model.rules[e.rule];
+    const Part_node* side[2] = {&graph.nodes[e.first], &graph.nodes[e.second]};
+    const Part_type* type[2] = {&model.types[rule.first.type], &model.types[rule.second.type]};
+    Cluster c;
+    c.name = "docking " + std::to_string(i) + " (rule " + std::to_string(e.rule) + ", " + type[0]->name + " - " +
+             type[1]->name + ")";
+    std::map<std::pair<int, int>, int> index;
+    for(std::size_t k = 0; k < rule.points.size(); ++k)
+    {
+      const Pair_point& q = rule.points[k];
+      c.vertices.push_back(side[q.side]->vertices[q.local]);
+      index[{q.side, q.local}] = static_cast<int>(k);
+    }
+    // A seam vertex of the second part is the first part's point.
+    for(const auto& [l0, l1] : rule.seam)
+    {
+      const auto it = index.find({0, l0});
+      if(it != index.end()) index[{1, l1}] = it->second;
+    }
+    for(int s = 0; s < 2; ++s)
+    {
+      for(const Triangle& t : type[s]->triangles)
+      {
+        Triangle mapped;
+        bool inside = true;
+        for(int k = 0; k < 3 && inside; ++k)
+        {
+          const auto it = index.find({s, t[k]});
+          inside = it != index.end();
+          if(inside) mapped[k] = it->second;
+        }
+        if(inside) c.triangles.push_back(mapped);
+      }
+      // The pair cluster fades out where its region ends inside a part.
+      for(const Cluster_edge& edge : type[s]->edges)
+      {
+        const bool a = index.count({s, edge.source}) > 0, b = index.count({s, edge.target}) > 0;
+        if(a != b) c.border.push_back(index.at({s, a ? edge.source : edge.target}));
+      }
+    }
+    std::sort(c.border.begin(), c.border.end());
+    c.border.erase(std::unique(c.border.begin(), c.border.end()), c.border.end());
+    c.edges = rule.edges;
+    c.mean = pair_target(rule, placed_targets[e.first], placed_targets[e.second],
+                         gather_rows(mesh.points, side[1]->vertices), e.motion, gather_rows(mesh.points, c.vertices));
+    c.modes = rule.space.modes;
+    c.sigmas = pair_sigmas(rule.space);
+    c.sigma_bound = model.parameters.sigma_bound;
+    problem.clusters.push_back(std::move(c));
+  }
+
+  // Neighbouring instances of one type: docked to each other or to a common part.
+  std::vector<std::set<int>> neighbours(graph.nodes.size());
+  for(const Part_edge& e : graph.edges)
+  {
+    neighbours[e.first].insert(e.second);
+    neighbours[e.second].insert(e.first);
+  }
+  std::set<std::pair<int, int>> coupled;
+  for(std::size_t a = 0; a < graph.nodes.size(); ++a)
+    for(int b : neighbours[a])
+    {
+      std::set<int> near = neighbours[b];
+      near.insert(b);
+      for(int c : near)
+        if(c != int(a) && graph.nodes[c].type == graph.nodes[a].type &&
+           model.types[graph.nodes[a].type].space.number_of_modes() > 0)
+          coupled.insert({std::min<int>(a, c), std::max<int>(a, c)});
+    }
+  problem.coupled_clusters.assign(coupled.begin(), coupled.end());
+  return problem;
+}
+
+} // namespace internal
+} // namespace MPM
+} // namespace CGAL

@@ -1,0 +1,90 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "assembly_common.h"
+
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/Part_graph_editing.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <filesystem>
+
+namespace mpm {
+
+namespace {
+
+// Tableau 10, as the editing commands use (doc/MPM/Command_line.md).
+constexpr std::array<std::array<unsigned char, 3>, 10> type_palette = {{
+  {78, 121, 167}, {242, 142, 43}, {225, 87, 89},  {118, 183, 178}, {89, 161, 79},
+  {237, 201, 72}, {176, 122, 161}, {255, 157, 167}, {156, 117, 95}, {186, 176, 172},
+}};
+
+std::string lower_extension(const std::string& path)
+{
+  std::string e = std::filesystem::path(path).extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+  return e;
+}
+
+} // namespace
+
+CGAL::MPM::Morphable_part_model load_model_with_grammar(const std::string& path, bool observed_only, int* derived)
+{
+  CGAL::MPM::Morphable_part_model model = CGAL::MPM::load_model(path);
+  const int added = observed_only ? 0 : static_cast<int>(CGAL::MPM::add_repetition_rules(model).size());
+  if(derived) *derived = added;
+  return model;
+}
+
+void check_mesh_output(const std::string& option, const std::string& path)
+{
+  const std::string e = lower_extension(path);
+  if(e != ".off" && e != ".obj" && e != ".ply")
+    throw Usage_error("option --" + option + ": '" + path + "' must end in .off, .obj or .ply");
+}
+
+void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string& path)
+{
+  ensure_parent_directory(path);
+  if(lower_extension(path) != ".ply")
+  {
+    CGAL::MPM::write_mesh_file(assembly.mesh, path);
+    return;
+  }
+  Eigen::Matrix<unsigned char, Eigen::Dynamic, 3> colors(assembly.mesh.number_of_faces(), 3);
+  for(int f = 0; f < colors.rows(); ++f)
+  {
+    const auto& c = type_palette[assembly.face_types[f] % type_palette.size()];
+    colors.row(f) << c[0], c[1], c[2];
+  }
+  CGAL::MPM::write_mesh_file(assembly.mesh, path, &colors);
+}
+
+Json assembly_summary(const CGAL::MPM::Morphable_part_model& model, const CGAL::MPM::Assembly& a)
+{
+  Json parts = Json::array();
+  for(std::size_t i = 0; i < a.graph.nodes.size(); ++i)
+    parts.push_back({{"node", i}, {"type", model.types[a.graph.nodes[i].type].name}, {"energy", a.part_energies.at(i)}});
+  Json dockings = Json::array();
+  for(std::size_t k = 0; k < a.graph.edges.size(); ++k)
+    dockings.push_back({{"edge", k}, {"first", a.graph.edges[k].first}, {"second", a.graph.edges[k].second},
+                        {"rule", a.graph.edges[k].rule}, {"energy", a.docking_energies.at(k)}});
+  return {
+    {"parts", a.graph.nodes.size()},
+    {"dockings", a.graph.edges.size()},
+    {"vertices", a.mesh.number_of_vertices()},
+    {"faces", a.mesh.number_of_faces()},
+    {"iterations", a.report.iterations},
+    {"converged", a.report.converged},
+    {"residual_energy", a.residual_energy},
+    {"energy_per_part", a.energy_per_part()},
+    {"setup_ms", a.setup_ms},
+    {"solve_ms", a.solve_ms},
+    {"part_energies", parts},
+    {"docking_energies", dockings},
+  };
+}
+
+} // namespace mpm

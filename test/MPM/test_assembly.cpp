@@ -1,0 +1,343 @@
+// Assembly of part graphs: reproduction of the training meshes, edited
+// graphs on the hand, the spider and the hexa-grid (closed where the input
+// was, no self-intersection, seams shared, residual energy per part within a
+// factor of the training graph's), spawning.
+//
+// This test includes CGAL's self-intersection test (heavier than the other
+// test sources): it is the independent check the issue asks for.
+#include <CGAL/MPM/Assembly.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Part_graph_editing.h>
+#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <map>
+#include <set>
+
+using namespace CGAL::MPM;
+
+namespace {
+
+const Morphable_part_model& model_of(Synthetic_family family)
+{
+  static std::map<Synthetic_family, Morphable_part_model> cache;
+  auto it = cache.find(family);
+  if(it == cache.end())
+  {
+    Synthetic_options o;
+    o.vertices = 3000;
+    const Synthetic_model s = make_synthetic_model(family, o);
+    Morphable_part_model m = learn_morphable_part_model(s.mesh, s.annotation);
+    add_repetition_rules(m);
+    it = cache.emplace(family, std::move(m)).first;
+  }
+  return it->second;
+}
+
+double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
+
+int border_edges(const std::vector<Triangle>& triangles)
+{
+  std::map<std::pair<int, int>, int> count;
+  for(const Triangle& t : triangles)
+    for(int k = 0; k < 3; ++k) ++count[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  int border = 0;
+  for(const auto& [edge, c] : count) border += c == 1;
+  return border;
+}
+
+bool self_intersects(const Indexed_mesh& mesh)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  CGAL::Surface_mesh<K::Point_3> sm;
+  std::vector<CGAL::Surface_mesh<K::Point_3>::Vertex_index> v;
+  for(int i = 0; i < mesh.number_of_vertices(); ++i)
+    v.push_back(sm.add_vertex(K::Point_3(mesh.points(i, 0), mesh.points(i, 1), mesh.points(i, 2))));
+  for(const Triangle& t : mesh.triangles)
+    EXPECT_NE(sm.add_face(v[t[0]], v[t[1]], v[t[2]]), CGAL::Surface_mesh<K::Point_3>::null_face());
+  return CGAL::Polygon_mesh_processing::does_self_intersect(sm);
+}
+
+// Every boundary docking maps each seam pair to one vertex.
+void expect_seams_shared(const Morphable_part_model& m, const Assembly& a)
+{
+  for(const Part_edge& e : a.graph.edges)
+    for(const auto& [l0, l1] : m.rules[e.rule].seam) ASSERT_EQ(a.vertex(e.first, l0), a.vertex(e.second, l1));
+}
+
+// Positions of the example's vertices, read through the assembly's node maps
+// and rigidly aligned onto the example; max deviation / diagonal.
+double reproduction_error(const Morphable_part_model& m, const Assembly& a, int example = 0)
+{
+  const Training_example& ex = m.examples[example];
+  std::vector<int> assembled, original;
+  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
+    for(std::size_t l = 0; l < ex.graph.nodes[i].vertices.size(); ++l)
+    {
+      assembled.push_back(a.vertex(int(i), int(l)));
+      original.push_back(ex.graph.nodes[i].vertices[l]);
+    }
+  Point_matrix p(assembled.size(), 3), q(original.size(), 3);
+  for(std::size_t k = 0; k < assembled.size(); ++k)
+  {
+    p.row(k) = a.mesh.points.row(assembled[k]);
+    q.row(k) = ex.mesh.points.row(original[k]);
+  }
+  const Point_matrix aligned = fit_rigid_motion(p, q).apply(p);
+  return (aligned - q).rowwise().norm().maxCoeff() / diagonal(q);
+}
+
+double training_energy_per_part(const Morphable_part_model& m)
+{
+  static std::map<const Morphable_part_model*, double> cache;
+  auto it = cache.find(&m);
+  if(it == cache.end()) it = cache.emplace(&m, assemble(m, part_graph_of_example(m)).energy_per_part()).first;
+  return it->second;
+}
+
+// Border edges where the families' closed meshes open: the seam loops of
+// boundary sites left free (a removed leg leaves its hole in the body).
+int free_site_border(const Morphable_part_model& m, const Part_graph& g)
+{
+  int border = 0;
+  for(std::size_t i = 0; i < g.nodes.size(); ++i)
+    for(int s : free_sites(m, g, int(i)))
+      if(m.types[g.nodes[i].type].sites[s].kind == Docking_kind::boundary)
+        border += int(m.types[g.nodes[i].type].sites[s].vertices.size());
+  return border;
+}
+
+// The checks every edited graph must pass; returns the energy factor.
+double check_edited(const Morphable_part_model& m, const Part_graph& g, const std::string& what,
+                    int expected_border = -1)
+{
+  if(expected_border < 0) expected_border = free_site_border(m, g);
+  const Assembly a = assemble(m, g);
+  EXPECT_TRUE(a.mesh.points.allFinite());
+  EXPECT_EQ(border_edges(a.mesh.triangles), expected_border) << what;
+  EXPECT_FALSE(self_intersects(a.mesh)) << what;
+  expect_seams_shared(m, a);
+  const double factor = a.energy_per_part() / training_energy_per_part(m);
+  std::cout << "[ assembly ] " << what << ": " << g.nodes.size() << " parts, " << a.mesh.number_of_vertices()
+            << " vertices, energy per part " << a.energy_per_part() << " (training graph "
+            << training_energy_per_part(m) << "), factor " << factor << ", " << a.report.iterations
+            << " iterations, set-up " << a.setup_ms << " ms, solve " << a.solve_ms << " ms\n";
+  std::vector<std::pair<double, std::string>> worst;
+  for(std::size_t c = 0; c < a.problem.clusters.size(); ++c)
+    worst.push_back({c < a.part_energies.size() ? a.part_energies[c] : a.docking_energies[c - a.part_energies.size()],
+                     a.problem.clusters[c].name});
+  std::sort(worst.rbegin(), worst.rend());
+  std::cout << "             largest cluster energies:";
+  for(std::size_t k = 0; k < 3 && k < worst.size(); ++k) std::cout << " " << worst[k].second << " " << worst[k].first << ";";
+  std::cout << "\n";
+  return factor;
+}
+
+int node_of_type(const Morphable_part_model& m, const Part_graph& g, const std::string& type, int skip = 0)
+{
+  for(std::size_t i = 0; i < g.nodes.size(); ++i)
+    if(m.types[g.nodes[i].type].name == type && skip-- == 0) return int(i);
+  return -1;
+}
+
+int edge_between(const Part_graph& g, int a, int b)
+{
+  for(std::size_t k = 0; k < g.edges.size(); ++k)
+    if((g.edges[k].first == a && g.edges[k].second == b) || (g.edges[k].first == b && g.edges[k].second == a))
+      return int(k);
+  return -1;
+}
+
+// The energy per part may grow this much over the training graph's: an
+// edit asks parts to fit neighbours they were never seen with, but each
+// part still sits near its learned shape (a rigidly misplaced or crushed
+// part costs orders of magnitude more).
+constexpr double energy_factor_bound = 10.;
+
+class Reproduction : public ::testing::TestWithParam<Synthetic_family>
+{};
+
+} // namespace
+
+// Targets = the training instances, placed where they were: the assembled
+// mesh is the training mesh (through the node maps), and the solver stays.
+TEST_P(Reproduction, training_graph_gives_the_training_mesh)
+{
+  const Morphable_part_model& m = model_of(GetParam());
+  const Assembly a = assemble(m, part_graph_of_example(m), training_assembly_options(m));
+  EXPECT_EQ(a.mesh.number_of_vertices(), m.examples[0].mesh.number_of_vertices());
+  EXPECT_EQ(a.mesh.number_of_faces(), m.examples[0].mesh.number_of_faces());
+  EXPECT_EQ(border_edges(a.mesh.triangles), border_edges(m.examples[0].mesh.triangles));
+  expect_seams_shared(m, a);
+  const double error = reproduction_error(m, a);
+  std::cout << "[ assembly ] " << family_name(GetParam()) << " reproduction error " << error << ", residual energy "
+            << a.residual_energy << "\n";
+  EXPECT_LT(error, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(All, Reproduction, ::testing::ValuesIn(all_synthetic_families()),
+                         [](const ::testing::TestParamInfo<Synthetic_family>& info) {
+                           std::string name = family_name(info.param);
+                           for(char& c : name) if(c == '-') c = '_';
+                           return name;
+                         });
+
+// Boundary dockings on closed rings: the breadth-first placement on the
+// seams alone rebuilds the training mesh from its instances.
+TEST(Assembly, placement_on_seams_reproduces_the_training_mesh)
+{
+  for(Synthetic_family f : {Synthetic_family::hand, Synthetic_family::spider})
+  {
+    const Morphable_part_model& m = model_of(f);
+    Assembly_options o = training_assembly_options(m);
+    o.placements.clear();
+    const Assembly a = assemble(m, part_graph_of_example(m), o);
+    const double error = reproduction_error(m, a);
+    std::cout << "[ assembly ] " << family_name(f) << " reproduction from seam placement: " << error << "\n";
+    EXPECT_LT(error, 1e-6);
+  }
+}
+
+TEST(Assembly, hand_with_an_inserted_finger_segment)
+{
+  const Morphable_part_model& m = model_of(Synthetic_family::hand);
+  EXPECT_EQ(border_edges(m.examples[0].mesh.triangles), 0);
+  const double train = check_edited(m, part_graph_of_example(m), "hand training graph");
+  EXPECT_NEAR(train, 1., 1e-12);
+  Part_graph g = part_graph_of_example(m);
+  const int middle = node_of_type(m, g, "middle", 1), distal = node_of_type(m, g, "distal", 1);
+  ASSERT_GE(edge_between(g, middle, distal), 0);
+  insert_segment(m, g, edge_between(g, middle, distal));
+  const double factor = check_edited(m, g, "hand, one finger with an inserted middle");
+  EXPECT_LT(factor, energy_factor_bound);
+}
+
+TEST(Assembly, spider_with_legs_removed_added_and_lengthened)
+{
+  const Morphable_part_model& m = model_of(Synthetic_family::spider);
+  Part_graph g = part_graph_of_example(m);
+  int root = root_node(g);
+  // Two legs off, one leg back at a freed site: seven legs.
+  std::vector<int> map = remove_branch(m, g, node_of_type(m, g, "coxa", 0), root);
+  root = map[root];
+  map = remove_branch(m, g, node_of_type(m, g, "coxa", 3), root);
+  root = map[root];
+  duplicate_branch(m, g, node_of_type(m, g, "coxa", 1), root, root);
+  EXPECT_EQ(free_site_border(m, g), 8); // one hole left open: a ring of 8 edges
+  EXPECT_LT(check_edited(m, g, "spider, seven legs"), energy_factor_bound);
+  // A longer leg: one more femur.
+  const int coxa = node_of_type(m, g, "coxa", 2);
+  int femur = -1;
+  for(const Part_edge& e : g.edges)
+    if(e.first == coxa || e.second == coxa)
+    {
+      const int other = e.first == coxa ? e.second : e.first;
+      if(m.types[g.nodes[other].type].name == "femur") femur = other;
+    }
+  ASSERT_GE(femur, 0);
+  int tibia_edge = -1;
+  for(std::size_t k = 0; k < g.edges.size(); ++k)
+  {
+    const Part_edge& e = g.edges[k];
+    if((e.first == femur || e.second == femur) && (e.first != coxa && e.second != coxa)) tibia_edge = int(k);
+  }
+  ASSERT_GE(tibia_edge, 0);
+  const int added = insert_segment(m, g, tibia_edge);
+  EXPECT_EQ(m.types[g.nodes[added].type].name, "femur");
+  // The synthetic legs are mitred tubes: a femur's far end is cut for the
+  // 65-degree knee, its near end for the 35-degree coxa joint, so a femur
+  // after a femur must shear its seam: a real distortion, which the energy
+  // reports (about 15 times the training graph's per part; the hand's
+  // segments, cut for 15 and 12 degrees, repeat almost freely). The bound
+  // only guards against a broken embedding.
+  const double factor = check_edited(m, g, "spider, seven legs, one with two femurs");
+  EXPECT_LT(factor, 5. * energy_factor_bound);
+}
+
+TEST(Assembly, hexa_grid_closed_ring_of_tiles)
+{
+  const Morphable_part_model& m = model_of(Synthetic_family::hexa_grid);
+  Part_graph g = part_graph_of_example(m);
+  // The six neighbours of an inner tile form a ring.
+  int center = -1;
+  std::vector<std::vector<int>> neighbours(g.nodes.size());
+  for(const Part_edge& e : g.edges)
+  {
+    neighbours[e.first].push_back(e.second);
+    neighbours[e.second].push_back(e.first);
+  }
+  for(std::size_t i = 0; i < g.nodes.size() && center < 0; ++i)
+    if(neighbours[i].size() == 6) center = int(i);
+  ASSERT_GE(center, 0);
+  std::set<int> ring(neighbours[center].begin(), neighbours[center].end());
+  std::vector<int> others;
+  for(std::size_t i = 0; i < g.nodes.size(); ++i)
+    if(!ring.count(int(i))) others.push_back(int(i));
+  std::vector<int> ring_faces_in_training;
+  const Training_example& ex = m.examples[0];
+  std::vector<Triangle> training_faces;
+  for(int i : ring)
+    for(const Triangle& t : m.types[g.nodes[i].type].triangles)
+      training_faces.push_back({ex.graph.nodes[i].vertices[t[0]], ex.graph.nodes[i].vertices[t[1]],
+                                ex.graph.nodes[i].vertices[t[2]]});
+  remove_nodes(g, others);
+  ASSERT_EQ(g.nodes.size(), 6u);
+  ASSERT_EQ(g.edges.size(), 6u); // a cycle
+  // Open the ring and close it again through the grammar.
+  const Part_edge opened = g.edges.back();
+  g.edges.pop_back();
+  close_cycle(m, g, opened.first, opened.second);
+  EXPECT_EQ(g.edges.back().rule, opened.rule);
+  // Same tiles, mean shapes: the ring is closed by the shared seam alone.
+  const int border = border_edges(training_faces);
+  for(Part_node& node : g.nodes) node.coordinates.setZero();
+  for(Part_edge& edge : g.edges) edge.coordinates.resize(0); // the pairs' means place the tiles
+  EXPECT_LT(check_edited(m, g, "hexa-grid, ring of six mean tiles", border), energy_factor_bound);
+}
+
+TEST(Assembly, invalid_graphs_and_options_are_rejected)
+{
+  const Morphable_part_model& m = model_of(Synthetic_family::hand);
+  Part_graph g = part_graph_of_example(m);
+  g.edges[0].rule = g.edges[1].rule == g.edges[0].rule ? g.edges[2].rule : g.edges[1].rule;
+  EXPECT_THROW(assemble(m, g), Input_error);
+  Assembly_options o;
+  o.targets.resize(2);
+  EXPECT_THROW(assemble(m, part_graph_of_example(m), o), Input_error);
+}
+
+TEST(Assembly, spawned_graphs_are_valid_finite_and_reproducible)
+{
+  for(Synthetic_family f : {Synthetic_family::hand, Synthetic_family::hexa_grid})
+  {
+    const Morphable_part_model& m = model_of(f);
+    Spawn_options o;
+    o.count = 4;
+    o.seed = 11;
+    const std::vector<Spawned_graph> a = spawn_part_graphs(m, part_graph_of_example(m), o);
+    const std::vector<Spawned_graph> b = spawn_part_graphs(m, part_graph_of_example(m), o);
+    ASSERT_EQ(a.size(), 4u);
+    for(std::size_t k = 0; k < a.size(); ++k)
+    {
+      EXPECT_NO_THROW(validate_part_graph(m, a[k].graph));
+      EXPECT_TRUE(a[k].assembly.mesh.points.allFinite());
+      EXPECT_TRUE(std::isfinite(a[k].assembly.residual_energy));
+      EXPECT_EQ(a[k].index, b[k].index);
+      EXPECT_EQ(a[k].assembly.residual_energy, b[k].assembly.residual_energy);
+      if(k > 0) EXPECT_LE(a[k - 1].assembly.energy_per_part(), a[k].assembly.energy_per_part());
+      std::cout << "[ spawn ] " << family_name(f) << " #" << a[k].index << " " << a[k].graph.nodes.size()
+                << " parts, energy per part " << a[k].assembly.energy_per_part() << ":";
+      for(const std::string& e : a[k].edits) std::cout << " " << e << ";";
+      std::cout << "\n";
+    }
+  }
+}
