@@ -23,6 +23,7 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -185,6 +186,7 @@ struct Embedding_solver::Impl
   std::vector<Eigen::Matrix3d> rotations;
   std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations; // per cluster point, with Rotations::per_vertex
   int iterations_since_reset = 0;
+  Iteration_timings timings; // of the last iterate()
 
   Impl(const Embedding_problem& problem, const Embedding_options& o);
   void prepare_cluster(const Cluster& c, double sigma_sub, int index);
@@ -201,6 +203,7 @@ struct Embedding_solver::Impl
   Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
   void reduced_local_step();
   Eigen::VectorXd solve_coordinates() const;
+  Eigen::MatrixXd positions_rhs(const Eigen::VectorXd& lambda) const;
   Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
   std::vector<Eigen::Matrix3d> w_of(const Eigen::VectorXd& lambda) const;
   double reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const;
@@ -673,7 +676,7 @@ Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
   return llt.solve(r);
 }
 
-Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambda) const
+Eigen::MatrixXd Embedding_solver::Impl::positions_rhs(const Eigen::VectorXd& lambda) const
 {
   Eigen::MatrixXd rhs = b0;
   for(std::size_t c = 0; c < clusters.size(); ++c)
@@ -684,7 +687,12 @@ Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambd
     const Eigen::MatrixXd rotated = lm * rotations[c].transpose();
     for(std::size_t i = 0; i < d.vertices.size(); ++i) rhs.row(d.vertices[i]) += rotated.row(i);
   }
-  return solve_a11(rhs);
+  return rhs;
+}
+
+Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambda) const
+{
+  return solve_a11(positions_rhs(lambda));
 }
 
 // W[c][d] = X_c^T A11^-1 X_d at [c * nc + d], and X_c^T Z at [nc * nc + c].
@@ -895,13 +903,36 @@ void Embedding_solver::set_handles(const std::vector<int>& vertices, const Point
 
 void Embedding_solver::clear_handles() { set_handles({}, Point_matrix(0, 3)); }
 
+void Embedding_solver::preprocess()
+{
+  if(!impl_->handle_terms_ready) impl_->prepare_handle_terms();
+}
+
 double Embedding_solver::iterate()
 {
   Impl& d = *impl_;
   if(!d.handle_terms_ready) d.prepare_handle_terms();
+  // Phase times (a few clock reads per iteration), reported by last_iteration_timings().
+  using Clock = std::chrono::steady_clock;
+  Iteration_timings& t = d.timings;
+  t = Iteration_timings();
+  const Clock::time_point start = Clock::now();
+  Clock::time_point mark = start;
+  const auto lap = [&mark](double& ms) {
+    const Clock::time_point now = Clock::now();
+    ms += std::chrono::duration<double, std::milli>(now - mark).count();
+    mark = now;
+  };
+  struct Total // also on the way out by an exception
+  {
+    double& ms;
+    Clock::time_point start;
+    ~Total() { ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+  } total{t.total_ms, start};
   const std::vector<Eigen::Matrix3d> previous_rotations = d.rotations;
   if(d.implicit) d.reduced_local_step();
   else d.local_step();
+  lap(t.local_step_ms);
   try
   {
     switch(d.options.global_step)
@@ -909,8 +940,11 @@ double Embedding_solver::iterate()
     case Global_step::reduced:
     {
       Eigen::VectorXd lambda = d.solve_coordinates();
+      lap(t.schur_ms);
       std::vector<Eigen::Matrix3d> w = d.w_of(lambda);
+      lap(t.right_hand_side_ms);
       const double e = d.reduced_energy(lambda, w);
+      lap(t.energy_ms);
       if(!lambda.allFinite() || !std::isfinite(e)) d.check_finite(d.positions, lambda);
       d.coordinates = std::move(lambda);
       d.w_blocks = std::move(w);
@@ -927,15 +961,25 @@ double Embedding_solver::iterate()
       if(d.options.global_step == Global_step::schur)
       {
         lambda = d.solve_coordinates();
-        v = d.positions_from(lambda);
+        lap(t.schur_ms);
+        const Eigen::MatrixXd rhs = d.positions_rhs(lambda);
+        lap(t.right_hand_side_ms);
+        v = d.solve_a11(rhs);
+        lap(t.back_substitution_ms);
       }
       else
+      {
         d.global_step_direct(v, lambda);
+        lap(t.direct_ms);
+      }
       d.check_finite(v, lambda);
       d.positions = std::move(v);
       d.coordinates = std::move(lambda);
       ++d.iterations_since_reset;
-      return d.energy_of(d.positions, d.coordinates);
+      mark = Clock::now();
+      const double e = d.energy_of(d.positions, d.coordinates);
+      lap(t.energy_ms);
+      return e;
     }
     }
   }
@@ -1135,6 +1179,8 @@ void Embedding_solver::reset()
 }
 
 int Embedding_solver::number_of_clusters() const { return static_cast<int>(impl_->clusters.size()); }
+
+const Iteration_timings& Embedding_solver::last_iteration_timings() const { return impl_->timings; }
 
 } // namespace MPM
 } // namespace CGAL

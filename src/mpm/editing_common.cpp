@@ -147,6 +147,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   Json settings = Json::object();
   Embedding_solver solver(editing.make_problem(args, model, example, settings), options);
   if(handles.size() > 0) solver.set_handles(handles.vertices, handles.targets);
+  solver.preprocess();
   const double setup_ms = milliseconds_since(setup_start);
 
   context.progress.update("solving", 0.3);

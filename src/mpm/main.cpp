@@ -16,6 +16,7 @@
 namespace mpm { Command make_compare_command(); } // cmd_compare.cpp
 namespace mpm { Command make_assemble_command(); Command make_graph_command(); } // cmd_assemble.cpp
 namespace mpm { Command make_spawn_command(); } // cmd_spawn.cpp
+namespace mpm { Command make_handles_command(); } // cmd_handles.cpp
 
 namespace {
 
@@ -30,6 +31,7 @@ const std::vector<mpm::Command>& all_commands()
     mpm::make_deform_command(),
     mpm::make_symmetrize_command(),
     mpm::make_caricature_command(),
+    mpm::make_handles_command(),
     mpm::make_compare_command(),
     mpm::make_graph_command(),
     mpm::make_assemble_command(),

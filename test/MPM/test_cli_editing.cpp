@@ -389,3 +389,23 @@ TEST_F(Cli_editing, MeshOptionStartsFromAnotherPoseAndRefusesOtherMeshes)
                    quote(path("x.off"))),
                1, {"other.off", "vertices"});
 }
+
+// `mpm handles` picks handles per part with targets from a held-out pose;
+// deforming with them moves the example toward that pose.
+TEST_F(Cli_editing, HandlesPerPartFromAPoseDriveADeformationTowardIt)
+{
+  const std::string pose = path("pose");
+  ASSERT_EQ(run("synth hand --vertices 2500 --pose-seed 9 -o " + quote(pose)).status, 0);
+  const Run_result h = run("handles " + quote(model()) + " --per-part 2 --targets " + quote(pose + ".off") + " -o " +
+                           quote(path("h.json")) + " --json");
+  ASSERT_EQ(h.status, 0) << h.err;
+  EXPECT_GE(json::parse(h.out)["handles"].get<int>(), 16);
+  const Run_result d = run("deform " + quote(model()) + " --handles " + quote(path("h.json")) + " -o " +
+                           quote(path("d.off")));
+  ASSERT_EQ(d.status, 0) << d.err;
+  const Point_matrix truth = CGAL::MPM::read_mesh_file(pose + ".off").mesh.points;
+  const Point_matrix got = CGAL::MPM::read_mesh_file(path("d.off")).mesh.points;
+  EXPECT_LT((got - truth).norm(), 0.5 * (rest() - truth).norm());
+  expect_error(run("handles " + quote(model()) + " --per-part 1 --farthest 3 -o " + quote(path("x.json"))), 2,
+               {"--per-part"});
+}

@@ -88,6 +88,29 @@ struct Solve_report
 };
 
 /// \ingroup PkgMPMRef
+/// Wall-clock time of the phases of the last `Embedding_solver::iterate()`,
+/// in milliseconds; a phase the global step does not have is 0.
+struct Iteration_timings
+{
+  /// Rotation fit: from precomputed blocks (reduced) or from the positions.
+  double local_step_ms = 0.;
+  /// Right-hand side: the vertex right-hand side b(R, lambda) (schur), or
+  /// the blocks W(lambda) that stand for it (reduced).
+  double right_hand_side_ms = 0.;
+  /// Schur part: assembling and solving the shape-coordinate system.
+  double schur_ms = 0.;
+  /// Positions from the prefactored vertex block (schur; reduced defers it
+  /// to `positions()`).
+  double back_substitution_ms = 0.;
+  /// Assembling, factoring and solving the whole system (direct).
+  double direct_ms = 0.;
+  /// Energy after the step: from blocks (reduced) or from the positions.
+  double energy_ms = 0.;
+  /// The whole `iterate()`.
+  double total_ms = 0.;
+};
+
+/// \ingroup PkgMPMRef
 /// Computes the embedding of a part graph: minimizes the elastic subspace
 /// energy of every cluster plus soft handle constraints over vertex
 /// positions, one rotation per cluster and the clusters' shape coordinates,
@@ -117,6 +140,10 @@ public:
   void set_handles(const std::vector<int>& vertices, const Point_matrix& targets);
   /// Removes all handles.
   void clear_handles();
+  /// Factors the vertex block and precomputes the blocks for the current
+  /// handle set now (otherwise the first iteration does it), so that the
+  /// cost of a new handle set can be paid, and timed, apart from iterating.
+  void preprocess();
 
   /// Runs local/global iterations (Anderson-accelerated) from the current
   /// state until the energy decreases by less than `options.tolerance`
@@ -140,6 +167,8 @@ public:
   void reset();
   /// Number of clusters.
   int number_of_clusters() const;
+  /// Phase times of the last `iterate()` (also the last one `solve()` ran).
+  const Iteration_timings& last_iteration_timings() const;
 
 private:
   struct Impl;

@@ -1,0 +1,102 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `mpm handles MODEL -o H.json`: chooses handle vertices on a model's
+// training example (per part or by farthest-point sampling) and takes their
+// targets from another pose of the same mesh, for scripted comparisons.
+#include "cli.h"
+
+#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Model_io.h>
+
+#include <climits>
+#include <iostream>
+
+namespace mpm {
+
+namespace {
+
+int run_handles(const Args& args, Context& context)
+{
+  using namespace CGAL::MPM;
+  const std::string model_path = args.positionals().front();
+  if(!args.has("output")) throw Usage_error("'mpm handles' needs -o H.json");
+  if(args.has("per-part") == args.has("farthest"))
+    throw Usage_error("'mpm handles' needs exactly one of --per-part K and --farthest N");
+  const std::string output = args.text("output");
+  const int example = static_cast<int>(args.integer("example", 0));
+
+  context.progress.update("loading " + model_path, 0.);
+  Morphable_part_model model = load_model(model_path);
+  if(example >= static_cast<int>(model.examples.size()))
+    throw Input_error(model_path, "example " + std::to_string(example),
+                      "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
+  const Training_example rest = model.examples[example];
+  Point_matrix targets = rest.mesh.points;
+  const std::string targets_file = args.text("targets");
+  if(!targets_file.empty())
+  {
+    // The same checks as for any other pose of the example.
+    set_example_pose(model, example, read_mesh_file(targets_file).mesh, targets_file);
+    targets = model.examples[example].mesh.points;
+  }
+
+  Handle_set handles;
+  if(args.has("per-part"))
+  {
+    Labeled_mesh labeled{rest.mesh, rest.face_labels, rest.name};
+    handles = handles_per_part(labeled, static_cast<int>(args.integer("per-part", 1)), targets);
+  }
+  else
+    handles = farthest_point_handles(rest.mesh, static_cast<int>(args.integer("farthest", 1)), targets);
+  ensure_parent_directory(output);
+  write_handles(handles, output);
+  context.progress.done();
+
+  const Json summary = {{"model", model_path},
+                        {"example", example},
+                        {"handles", handles.size()},
+                        {"targets", targets_file.empty() ? Json(nullptr) : Json(targets_file)},
+                        {"output", output}};
+  if(context.json)
+  {
+    print_json(summary);
+    return exit_ok;
+  }
+  std::cout << "Wrote " << handles.size() << " handles of example " << example << " of " << model_path << " to "
+            << output << (targets_file.empty() ? " (targets at rest)" : " (targets from " + targets_file + ")")
+            << "\n";
+  return exit_ok;
+}
+
+} // namespace
+
+Command make_handles_command()
+{
+  Command c;
+  c.name = "handles";
+  c.summary = "choose handle vertices on a model's example, with targets from another pose";
+  c.synopsis = "MODEL (--per-part K | --farthest N) [--targets POSE.off] [--example N] -o H.json";
+  c.operand = "MODEL";
+  c.description =
+    "--per-part 1 takes each part's vertex nearest to its centroid, --per-part 2 also\n"
+    "the vertex farthest from it; --farthest N samples N vertices by farthest-point\n"
+    "sampling. Targets are the positions of the same vertices in POSE.off (a mesh\n"
+    "with the example's triangles, e.g. from 'mpm synth FAMILY --pose-seed S'), or\n"
+    "the rest positions. The file format is doc/MPM/Handles.md.";
+  c.min_positionals = c.max_positionals = 1;
+  c.options = {
+    {"output", 'o', Value_kind::text, "H.json", "", "handle file to write (required)"},
+    {"per-part", 0, Value_kind::integer, "K", "none", "handles per part (1 or 2)", 1, 2},
+    {"farthest", 0, Value_kind::integer, "N", "none", "handles by farthest-point sampling", 1, INT_MAX},
+    {"targets", 0, Value_kind::text, "POSE.off", "none: rest positions", "pose giving the targets"},
+    {"example", 0, Value_kind::integer, "N", "0", "training example", 0, INT_MAX},
+  };
+  c.run = run_handles;
+  return c;
+}
+
+} // namespace mpm
