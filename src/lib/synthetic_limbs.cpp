@@ -70,6 +70,26 @@ int limbed_model_vertex_count(const Limbed_model_spec& spec)
   return static_cast<int>(count);
 }
 
+Limbed_model_spec limbed_spec_for_vertex_count(int target,
+                                               const std::function<Limbed_model_spec(int, double)>& spec_of)
+{
+  Limbed_model_spec best;
+  double best_score = -1.;
+  for(int m = 2; m <= 64; ++m)
+    for(int d = 6; d <= 14; ++d)
+    {
+      const Limbed_model_spec spec = spec_of(m, 0.1 * d);
+      const double score =
+        std::abs(double(limbed_model_vertex_count(spec)) / target - 1.) + 0.05 * std::abs(std::log(0.1 * d));
+      if(best_score < 0. || score < best_score)
+      {
+        best = spec;
+        best_score = score;
+      }
+    }
+  return best;
+}
+
 // The body is the surface of a lattice box (cell 2 / m, so a hole of m cells
 // has the tube's radius 1 as inscribed circle), edges rounded with radius
 // `corner_cells`. Around a hole, lattice points within `blend_cells` of the

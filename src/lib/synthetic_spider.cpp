@@ -56,19 +56,7 @@ Limbed_model_spec spider_spec(int m, double density)
 Synthetic_model make_spider(const Synthetic_options& options)
 {
   const int target = options.vertices > 0 ? options.vertices : 66453;
-  Limbed_model_spec best;
-  double best_score = -1.;
-  for(int m = 2; m <= 64; ++m)
-    for(int d = 6; d <= 14; ++d)
-    {
-      const Limbed_model_spec spec = spider_spec(m, 0.1 * d);
-      const double score = std::abs(double(limbed_model_vertex_count(spec)) / target - 1.) + 0.05 * std::abs(std::log(0.1 * d));
-      if(best_score < 0. || score < best_score)
-      {
-        best = spec;
-        best_score = score;
-      }
-    }
+  const Limbed_model_spec best = limbed_spec_for_vertex_count(target, spider_spec);
   return make_limbed_model(best, Synthetic_family::spider, options);
 }
 

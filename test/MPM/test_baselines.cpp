@@ -15,6 +15,8 @@
 #include <CGAL/MPM/Thin_plate_spline.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
+#include "Learned_models.h"
+
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
@@ -26,29 +28,11 @@ using namespace CGAL::MPM;
 
 namespace {
 
-struct Learned
-{
-  Synthetic_model truth;
-  Morphable_part_model model;
-};
+using mpm_test::diagonal;
+using mpm_test::Learned;
 
-const Learned& learned(Synthetic_family family)
-{
-  static std::map<Synthetic_family, Learned> cache;
-  auto it = cache.find(family);
-  if(it == cache.end())
-  {
-    Synthetic_options o;
-    o.vertices = 2000;
-    Learned l;
-    l.truth = make_synthetic_model(family, o);
-    l.model = learn_morphable_part_model(l.truth.mesh, l.truth.annotation);
-    it = cache.emplace(family, std::move(l)).first;
-  }
-  return it->second;
-}
+const Learned& learned(Synthetic_family family) { return mpm_test::learned(family, 2000); }
 
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 double max_distance(const Point_matrix& a, const Point_matrix& b) { return (a - b).rowwise().norm().maxCoeff(); }
 
 // Fewer ARAP iterations than the default keep the suite fast; the tests

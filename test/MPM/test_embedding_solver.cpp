@@ -6,6 +6,8 @@
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
+#include "Learned_models.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -16,27 +18,11 @@ using namespace CGAL::MPM;
 
 namespace {
 
-struct Learned
-{
-  Synthetic_model truth;
-  Morphable_part_model model;
-};
+using mpm_test::diagonal;
+using mpm_test::Learned;
+using mpm_test::rows;
 
-const Learned& learned(Synthetic_family family)
-{
-  static std::map<Synthetic_family, Learned> cache;
-  auto it = cache.find(family);
-  if(it == cache.end())
-  {
-    Synthetic_options o;
-    o.vertices = 3000;
-    Learned l;
-    l.truth = make_synthetic_model(family, o);
-    l.model = learn_morphable_part_model(l.truth.mesh, l.truth.annotation);
-    it = cache.emplace(family, std::move(l)).first;
-  }
-  return it->second;
-}
+const Learned& learned(Synthetic_family family) { return mpm_test::learned(family, 3000); }
 
 // One handle per part: the part vertex nearest to its centroid.
 std::vector<int> handle_per_part(const Synthetic_model& s)
@@ -54,15 +40,6 @@ std::vector<int> handle_per_part(const Synthetic_model& s)
   }
   return handles;
 }
-
-Point_matrix rows(const Point_matrix& p, const std::vector<int>& vertices)
-{
-  Point_matrix r(vertices.size(), 3);
-  for(std::size_t i = 0; i < vertices.size(); ++i) r.row(i) = p.row(vertices[i]);
-  return r;
-}
-
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 
 class Solver_on_family : public ::testing::TestWithParam<Synthetic_family>
 {};

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <random>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -132,6 +133,11 @@ struct Limbed_model_spec
 
 /// Vertex count of `make_limbed_model(spec, ...)` without building it.
 int limbed_model_vertex_count(const Limbed_model_spec& spec);
+
+/// The spec `spec_of(cells, ring_density)` whose vertex count is nearest to
+/// `target`, over a grid of resolutions (a mild preference for unit density).
+Limbed_model_spec limbed_spec_for_vertex_count(int target,
+                                               const std::function<Limbed_model_spec(int, double)>& spec_of);
 
 /// Builds a limbed model. Types: the body (single instance) and one type per
 /// chain position. Latents per segment: length, bulge, then the bend of its
