@@ -8,7 +8,9 @@
 #include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
+#include <array>
 #include <random>
+#include <set>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -70,7 +72,22 @@ Rigid_motion place_neighbour(const Docking_rule& rule, const Part_edge& e, int u
                              const Point_matrix& target_v)
 {
   const int side_u = e.first == u ? 0 : 1;
-  if(rule.kind == Docking_kind::boundary && !rule.seam.empty())
+  if(rule.kind == Docking_kind::boundary && !rule.merged_seam.empty())
+  {
+    // A merged seam: Kabsch on every merged vertex (interpolated where inserted).
+    Point_matrix on_first, on_second;
+    if(side_u == 0)
+    {
+      internal::seam_points(rule, placed_u, target_v, on_first, on_second);
+      if(!internal::seam_is_collinear(on_first)) return fit_rigid_motion(on_second, on_first);
+    }
+    else
+    {
+      internal::seam_points(rule, target_v, placed_u, on_first, on_second);
+      if(!internal::seam_is_collinear(on_second)) return fit_rigid_motion(on_first, on_second);
+    }
+  }
+  if(rule.kind == Docking_kind::boundary && !rule.seam.empty() && rule.merged_seam.empty())
   {
     Point_matrix from(rule.seam.size(), 3), to(rule.seam.size(), 3);
     for(std::size_t k = 0; k < rule.seam.size(); ++k)
@@ -206,14 +223,95 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
   for(int i = 0; i < n; ++i) placed_targets[i] = motion[i].apply(targets[i]);
 
   // Stitching: one vertex per class of identified (node, local) pairs.
+  // Differently sampled seams (merged seams) first insert their vertices
+  // into the parts that lack them: node i's inserted vertices follow its
+  // type's locals, each splitting a border edge of the part.
+  std::vector<internal::Part_refinement> refinements(n);
+  std::vector<std::vector<std::array<int, 2>>> merged_locals(graph.edges.size()); // per merged vertex: local on each side
+  for(std::size_t k = 0; k < graph.edges.size(); ++k)
+  {
+    const Part_edge& e = graph.edges[k];
+    const Docking_rule& rule = model.rules[e.rule];
+    for(const Seam_vertex& v : rule.merged_seam)
+    {
+      std::array<int, 2> local = v.local;
+      for(int s = 0; s < 2; ++s)
+        if(local[s] < 0)
+        {
+          const int node = s == 0 ? e.first : e.second;
+          internal::Part_refinement& r = refinements[node];
+          local[s] = model.types[graph.nodes[node].type].number_of_vertices + int(r.inserted.size());
+          r.inserted.push_back({v.from[s], v.to[s], v.weight[s]});
+        }
+      merged_locals[k].push_back(local);
+    }
+  }
+  for(int i = 0; i < n; ++i)
+  {
+    internal::Part_refinement& r = refinements[i];
+    if(r.inserted.empty()) continue;
+    const Part_type& type = model.types[graph.nodes[i].type];
+    // Split each border edge (from, to) at its inserted vertices, in order:
+    // the triangle (from, to, c) becomes the fan (from, x1, c) ... (xk, to, c).
+    std::map<std::pair<int, int>, std::vector<std::pair<double, int>>> on_edge;
+    for(std::size_t k = 0; k < r.inserted.size(); ++k)
+      on_edge[{r.inserted[k].from, r.inserted[k].to}].push_back(
+        {r.inserted[k].weight, type.number_of_vertices + int(k)});
+    r.triangles = type.triangles;
+    std::set<std::pair<int, int>> split;
+    for(auto& [edge, inserted] : on_edge)
+    {
+      std::sort(inserted.begin(), inserted.end());
+      bool found = false;
+      for(std::size_t t = 0; t < r.triangles.size() && !found; ++t)
+        for(int c = 0; c < 3 && !found; ++c)
+        {
+          const Triangle tri = r.triangles[t];
+          if(tri[c] != edge.first || tri[(c + 1) % 3] != edge.second) continue;
+          found = true;
+          const int apex = tri[(c + 2) % 3];
+          int previous = edge.first;
+          std::vector<Triangle> fan;
+          for(const auto& [w, x] : inserted)
+          {
+            fan.push_back({previous, x, apex});
+            previous = x;
+          }
+          fan.push_back({previous, edge.second, apex});
+          r.triangles[t] = fan.front();
+          r.triangles.insert(r.triangles.end(), fan.begin() + 1, fan.end());
+          split.insert({std::min(edge.first, edge.second), std::max(edge.first, edge.second)});
+        }
+      if(!found)
+        throw Input_error("part graph", "node " + std::to_string(i) + " (" + type.name + ")",
+                          "a merged seam splits its edge " + std::to_string(edge.first) + " - " +
+                            std::to_string(edge.second) + ", which is not a border edge of its type");
+    }
+    std::set<std::pair<int, int>> edges;
+    for(const Cluster_edge& ce : type.edges)
+      if(!ce.is_virtual && !split.count({ce.source, ce.target})) edges.insert({ce.source, ce.target});
+    for(const Triangle& t : r.triangles)
+      for(int c = 0; c < 3; ++c)
+        edges.insert({std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3])});
+    for(const auto& [a, b] : edges) r.edges.push_back({a, b, false});
+    for(const Cluster_edge& ce : type.edges)
+      if(ce.is_virtual) r.edges.push_back(ce);
+  }
+
   std::vector<int> offset(n + 1, 0);
-  for(int i = 0; i < n; ++i) offset[i + 1] = offset[i] + model.types[graph.nodes[i].type].number_of_vertices;
+  for(int i = 0; i < n; ++i)
+    offset[i + 1] = offset[i] + model.types[graph.nodes[i].type].number_of_vertices + int(refinements[i].inserted.size());
   const int total = offset[n];
   std::vector<int> rank(total), parent(total);
   boost::disjoint_sets<int*, int*> classes(rank.data(), parent.data());
   for(int v = 0; v < total; ++v) classes.make_set(v);
-  for(const Part_edge& e : graph.edges)
+  for(std::size_t k = 0; k < graph.edges.size(); ++k)
+  {
+    const Part_edge& e = graph.edges[k];
     for(const auto& [l0, l1] : model.rules[e.rule].seam) classes.union_set(offset[e.first] + l0, offset[e.second] + l1);
+    for(const std::array<int, 2>& l : merged_locals[k])
+      classes.union_set(offset[e.first] + l[0], offset[e.second] + l[1]);
+  }
   std::vector<int> vertex_of_class(total, -1);
   int vertices = 0;
   for(int v = 0; v < total; ++v)
@@ -227,6 +325,9 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
   {
     Part_node& node = graph.nodes[i];
     const int locals = offset[i + 1] - offset[i];
+    const Point_matrix placed_i = refinements[i].inserted.empty()
+                                    ? placed_targets[i]
+                                    : internal::refine_points(placed_targets[i], refinements[i].inserted);
     node.vertices.assign(locals, -1);
     std::map<int, int> local_of_vertex;
     for(int l = 0; l < locals; ++l)
@@ -238,7 +339,7 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
                           "its dockings identify its local vertices " + std::to_string(it->second) + " and " +
                             std::to_string(l) + " (a cycle of dockings that does not close consistently)");
       node.vertices[l] = v;
-      sum.row(v) += placed_targets[i].row(l);
+      sum.row(v) += placed_i.row(l);
       count[v] += 1.;
     }
     node.motion = motion[i];
@@ -246,11 +347,16 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
   }
   Point_matrix initial(vertices, 3);
   for(int v = 0; v < vertices; ++v) initial.row(v) = sum.row(v) / count[v];
+  result.seam_vertices.assign(graph.edges.size(), {});
+  for(std::size_t k = 0; k < graph.edges.size(); ++k)
+    for(const std::array<int, 2>& l : merged_locals[k])
+      result.seam_vertices[k].push_back(graph.nodes[graph.edges[k].first].vertices[l[0]]);
 
   Indexed_mesh mesh;
   mesh.points = initial;
   for(int i = 0; i < n; ++i)
-    for(const Triangle& t : model.types[graph.nodes[i].type].triangles)
+    for(const Triangle& t : refinements[i].inserted.empty() ? model.types[graph.nodes[i].type].triangles
+                                                            : refinements[i].triangles)
     {
       mesh.triangles.push_back({graph.nodes[i].vertices[t[0]], graph.nodes[i].vertices[t[1]],
                                 graph.nodes[i].vertices[t[2]]});
@@ -271,7 +377,7 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
     [&targets](int node, const Shape_space& space, const Eigen::VectorXd&, const Point_matrix&, const std::string&) {
       return internal::Part_target{targets[node], space.sigmas};
     },
-    [](const Shape_space& space) { return space.sigmas; });
+    [](const Shape_space& space) { return space.sigmas; }, &refinements);
   result.initial_positions = initial;
   result.mesh = mesh;
 

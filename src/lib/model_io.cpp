@@ -235,6 +235,11 @@ std::string payload_of(const Morphable_part_model& model)
     w.kind(r.kind);
     w.count(r.seam.size());
     for(const auto& s : r.seam) { w.i32(s.first); w.i32(s.second); }
+    w.count(r.merged_seam.size());
+    for(const Seam_vertex& v : r.merged_seam) {
+      w.f64(v.parameter);
+      for(int side = 0; side < 2; ++side) { w.i32(v.local[side]); w.i32(v.from[side]); w.i32(v.to[side]); w.f64(v.weight[side]); }
+    }
     w.count(r.points.size());
     for(const Pair_point& q : r.points) { w.i32(q.side); w.i32(q.local); }
     w.edges(r.edges);
@@ -296,6 +301,11 @@ Morphable_part_model model_of(Reader& r)
     rule.kind = r.kind();
     rule.seam.resize(r.count(8));
     for(auto& s : rule.seam) { s.first = r.i32(); s.second = r.i32(); }
+    rule.merged_seam.resize(r.count(8 + 2 * 20));
+    for(Seam_vertex& v : rule.merged_seam) {
+      v.parameter = r.f64();
+      for(int side = 0; side < 2; ++side) { v.local[side] = r.i32(); v.from[side] = r.i32(); v.to[side] = r.i32(); v.weight[side] = r.f64(); }
+    }
     rule.points.resize(r.count(8));
     for(Pair_point& q : rule.points) { q.side = r.i32(); q.local = r.i32(); }
     rule.edges = r.edges();
@@ -370,6 +380,19 @@ private:
     for(std::size_t s = 0; s < rule.seam.size(); ++s) {
       in_range(rule.seam[s].first, n[0], element + " seam pair " + std::to_string(s), "first vertex");
       in_range(rule.seam[s].second, n[1], element + " seam pair " + std::to_string(s), "second vertex");
+    }
+    for(std::size_t k = 0; k < rule.merged_seam.size(); ++k) {
+      const Seam_vertex& v = rule.merged_seam[k];
+      const std::string where = element + " merged seam vertex " + std::to_string(k);
+      for(int side = 0; side < 2; ++side) {
+        // -1 marks a vertex inserted on that side; it then lies on an edge.
+        in_range(v.local[side] + 1, n[side] + 1, where, "vertex");
+        if(v.local[side] < 0) {
+          in_range(v.from[side], n[side], where, "split edge start");
+          in_range(v.to[side], n[side], where, "split edge end");
+        }
+        if(!(v.weight[side] >= 0. && v.weight[side] <= 1.)) fail(where, "interpolation weight outside [0, 1]");
+      }
     }
     for(std::size_t q = 0; q < rule.points.size(); ++q) {
       const Pair_point& p = rule.points[q];

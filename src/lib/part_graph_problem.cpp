@@ -37,10 +37,80 @@ bool seam_is_collinear(const Point_matrix& p)
   return !(spread[1] > 1e-3 * spread[0]);
 }
 
+Point_matrix refine_points(const Point_matrix& points, const std::vector<Inserted_vertex>& inserted)
+{
+  Point_matrix r(points.rows() + Eigen::Index(inserted.size()), 3);
+  r.topRows(points.rows()) = points;
+  for(std::size_t k = 0; k < inserted.size(); ++k)
+    r.row(points.rows() + Eigen::Index(k)) =
+      (1. - inserted[k].weight) * points.row(inserted[k].from) + inserted[k].weight * points.row(inserted[k].to);
+  return r;
+}
+
+Eigen::MatrixXd refine_modes(const Eigen::MatrixXd& modes, const std::vector<Inserted_vertex>& inserted)
+{
+  Eigen::MatrixXd r(modes.rows() + 3 * Eigen::Index(inserted.size()), modes.cols());
+  r.topRows(modes.rows()) = modes;
+  for(std::size_t k = 0; k < inserted.size(); ++k)
+    r.middleRows(modes.rows() + 3 * Eigen::Index(k), 3) =
+      (1. - inserted[k].weight) * modes.middleRows(3 * inserted[k].from, 3) +
+      inserted[k].weight * modes.middleRows(3 * inserted[k].to, 3);
+  return r;
+}
+
+void seam_points(const Docking_rule& rule, const Point_matrix& first, const Point_matrix& second,
+                 Point_matrix& on_first, Point_matrix& on_second)
+{
+  if(rule.merged_seam.empty())
+  {
+    on_first.resize(rule.seam.size(), 3);
+    on_second.resize(rule.seam.size(), 3);
+    for(std::size_t k = 0; k < rule.seam.size(); ++k)
+    {
+      on_first.row(k) = first.row(rule.seam[k].first);
+      on_second.row(k) = second.row(rule.seam[k].second);
+    }
+    return;
+  }
+  on_first.resize(rule.merged_seam.size(), 3);
+  on_second.resize(rule.merged_seam.size(), 3);
+  for(std::size_t k = 0; k < rule.merged_seam.size(); ++k)
+  {
+    const Seam_vertex& v = rule.merged_seam[k];
+    for(int s = 0; s < 2; ++s)
+    {
+      const Point_matrix& p = s == 0 ? first : second;
+      (s == 0 ? on_first : on_second).row(k) =
+        v.local[s] >= 0 ? Eigen::RowVector3d(p.row(v.local[s]))
+                        : Eigen::RowVector3d((1. - v.weight[s]) * p.row(v.from[s]) + v.weight[s] * p.row(v.to[s]));
+    }
+  }
+}
+
+std::vector<int> seam_locals(const Docking_rule& rule, int side)
+{
+  std::vector<int> r;
+  for(const auto& [l0, l1] : rule.seam) r.push_back(side == 0 ? l0 : l1);
+  for(const Seam_vertex& v : rule.merged_seam)
+    if(v.local[side] >= 0) r.push_back(v.local[side]);
+  std::sort(r.begin(), r.end());
+  r.erase(std::unique(r.begin(), r.end()), r.end());
+  return r;
+}
+
 Point_matrix pair_target(const Docking_rule& rule, const Point_matrix& first, Point_matrix second,
                          const Point_matrix& second_rest, const Rigid_motion& pair_motion, const Point_matrix& rest)
 {
-  if(!rule.seam.empty())
+  if(!rule.merged_seam.empty())
+  {
+    // A merged seam: the second part is placed on the first by every merged
+    // vertex (interpolated where it is inserted); a merged loop is never
+    // collinear (it has at least as many points as either loop).
+    Point_matrix on_first, on_second;
+    seam_points(rule, first, second, on_first, on_second);
+    if(!seam_is_collinear(on_second)) second = fit_rigid_motion(on_second, on_first).apply(second);
+  }
+  else if(!rule.seam.empty())
   {
     Point_matrix from(rule.seam.size(), 3), to(rule.seam.size(), 3);
     for(std::size_t k = 0; k < rule.seam.size(); ++k)
@@ -66,7 +136,8 @@ Point_matrix pair_target(const Docking_rule& rule, const Point_matrix& first, Po
 
 Embedding_problem make_part_graph_problem(const Morphable_part_model& model, const Part_graph& graph,
                                           const Indexed_mesh& mesh, const Part_target_policy& policy,
-                                          const Pair_sigma_policy& pair_sigmas)
+                                          const Pair_sigma_policy& pair_sigmas,
+                                          const std::vector<Part_refinement>* refinements)
 {
   Embedding_problem problem;
   problem.mesh = mesh;
@@ -82,7 +153,22 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
       seams[e.first].insert(l0);
       seams[e.second].insert(l1);
     }
+    for(const Seam_vertex& v : rule.merged_seam)
+      for(int s = 0; s < 2; ++s)
+        if(v.local[s] >= 0) (s == 0 ? seams[e.first] : seams[e.second]).insert(v.local[s]);
   }
+  // Inserted seam vertices fade like the seam they lie on.
+  if(refinements)
+    for(std::size_t i = 0; i < graph.nodes.size() && i < refinements->size(); ++i)
+      for(std::size_t k = 0; k < (*refinements)[i].inserted.size(); ++k)
+        seams[i].insert(model.types[graph.nodes[i].type].number_of_vertices + int(k));
+  // The type's own local vertices of a node (a refined node lists its
+  // inserted vertices after them).
+  const auto type_vertices = [&](const Part_node& node) {
+    const std::size_t n = static_cast<std::size_t>(model.types[node.type].number_of_vertices);
+    return node.vertices.size() > n ? std::vector<int>(node.vertices.begin(), node.vertices.begin() + n)
+                                    : node.vertices;
+  };
 
   // Each part's target shape, placed where the part rests: pair targets are
   // assembled from them, so that parts and pairs ask for the same shape.
@@ -98,9 +184,17 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
     c.triangles = type.triangles;
     c.edges = type.edges;
     const Part_target t = policy(static_cast<int>(i), type.space, node.coordinates,
-                                 to_space_frame(node.motion, gather_rows(mesh.points, node.vertices)), type.name);
+                                 to_space_frame(node.motion, gather_rows(mesh.points, type_vertices(node))), type.name);
     c.mean = t.mean;
     c.modes = type.space.modes;
+    if(refinements && i < refinements->size() && !(*refinements)[i].inserted.empty())
+    {
+      const Part_refinement& r = (*refinements)[i];
+      c.triangles = r.triangles;
+      c.edges = r.edges;
+      c.mean = refine_points(t.mean, r.inserted);
+      c.modes = refine_modes(type.space.modes, r.inserted);
+    }
     c.sigmas = t.sigmas;
     c.border.assign(seams[i].begin(), seams[i].end());
     c.sigma_bound = model.parameters.sigma_bound;
@@ -155,7 +249,7 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
     c.border.erase(std::unique(c.border.begin(), c.border.end()), c.border.end());
     c.edges = rule.edges;
     c.mean = pair_target(rule, placed_targets[e.first], placed_targets[e.second],
-                         gather_rows(mesh.points, side[1]->vertices), e.motion, gather_rows(mesh.points, c.vertices));
+                         gather_rows(mesh.points, type_vertices(*side[1])), e.motion, gather_rows(mesh.points, c.vertices));
     c.modes = rule.space.modes;
     c.sigmas = pair_sigmas(rule.space);
     c.sigma_bound = model.parameters.sigma_bound;

@@ -186,7 +186,7 @@ TEST(ModelIo, ForeignAndOtherVersionFiles)
 
   std::string bytes = serialize_model(sample_model());
   bytes[8] = 7;
-  MPM_EXPECT_INPUT_ERROR(deserialize_model(bytes, "old.mpm"), "old.mpm: model format version 7, this build reads version 1");
+  MPM_EXPECT_INPUT_ERROR(deserialize_model(bytes, "old.mpm"), "old.mpm: model format version 7, this build reads version 2");
 }
 
 TEST(ModelIo, DamagedFiles)

@@ -38,11 +38,16 @@ struct Assembly
 {
   /// The input graph with `Part_node::vertices` (local -> vertex of `mesh`)
   /// and the initial placements (`Part_node::motion`, `Part_edge::motion`) filled.
+  /// A node docked by a differently sampled seam (`Docking_rule::merged_seam`)
+  /// lists after its type's local vertices the seam vertices inserted into it.
   Part_graph graph;
   Indexed_mesh mesh;              ///< the embedded mesh (the initial one when not solved)
   Point_matrix initial_positions; ///< the rigid placement, seam vertices averaged
   std::vector<int> face_nodes;    ///< node of each face
   std::vector<int> face_types;    ///< part type of each face
+  /// Per edge: the mesh vertex of each vertex of its rule's merged seam
+  /// (empty for seams sampled alike).
+  std::vector<std::vector<int>> seam_vertices;
   Embedding_problem problem;      ///< what was solved (clusters: nodes, then edges)
   Solve_report report;            ///< what the solver did
   double residual_energy = 0.;    ///< energy of the embedding: the distortion the graph needs
@@ -64,7 +69,11 @@ struct Assembly
 /// - every node contributes its type's local vertices and triangles; the
 ///   seam vertices of boundary dockings are shared, one mesh vertex per
 ///   class of identified (node, local vertex) pairs (union-find over the
-///   rules' seams: a cycle closes by this sharing);
+///   rules' seams: a cycle closes by this sharing); where a rule joins two
+///   seams sampled differently (`Docking_rule::merged_seam`), each side first
+///   gets the other side's vertices inserted (its border triangles split, the
+///   inserted vertex's mean and modes interpolated between its two loop
+///   neighbours), so that the seam is the merged loop on both sides;
 /// - each node's target shape (type mean plus its coordinates, or
 ///   `options.targets`) is placed rigidly: the root at its own frame, then
 ///   breadth-first each neighbour aligned on its seam to the placed part
@@ -102,6 +111,8 @@ struct Spawn_options
 struct Spawned_graph
 {
   int index = 0;                  ///< order of drawing (0 = first drawn)
+  /// A node docked by a differently sampled seam (`Docking_rule::merged_seam`)
+  /// lists after its type's local vertices the seam vertices inserted into it.
   Part_graph graph;               ///< the graph
   std::vector<std::string> edits; ///< the edits that made it from the start graph
   Assembly assembly;              ///< its embedding

@@ -27,10 +27,33 @@ namespace MPM {
 /// docked on the seam.
 /// @{
 
-/// The repetition rule of type `type` between its sites `site_a` < `site_b`.
-/// Throws `Input_error` when the sites are not two boundary loops with the
-/// same number of vertices.
+/// The repetition rule of type `type` between its sites `site_a` < `site_b`
+/// (`derive_docking_rule()` of the two sites). Throws `Input_error` when the
+/// sites are not two boundary loops.
 Docking_rule derive_repetition_rule(const Morphable_part_model& model, int type, int site_a, int site_b);
+
+/// A derived rule docking boundary site `a` (side 0) to boundary site `b`
+/// (side 1), of any part types (the same type too), each site's vertices
+/// forming one closed loop on its type's border. Loops of the same size are
+/// matched one to one as for repetition rules. Loops of different sizes get
+/// a merged seam (`Docking_rule::merged_seam`, see doc/MPM/Part_graphs.md,
+/// "Seams sampled differently"): both loops are parametrized by arc length on
+/// their types' means, `b`'s run backwards (a manifold gluing); among the
+/// offsets that make a vertex of one loop meet a vertex of the other, the one
+/// whose rigid fit of the two parametrized loops is best fixes the twist; the
+/// merged loop is the union of both loops' vertices ordered by parameter,
+/// vertices nearer than a fifth of the finer spacing identified
+/// (`Docking_rule::seam`), every other one inserted on the side that lacks it,
+/// between its two loop neighbours there. Pair points and the mode-less pair
+/// space are as for repetition rules (`b`'s mean docked on `a`'s by the
+/// merged seam). Throws `Input_error` for a site that does not exist, is not
+/// a boundary site or not one simple boundary loop.
+Docking_rule derive_docking_rule(const Morphable_part_model& model, const Site_ref& a, const Site_ref& b);
+
+/// Appends `derive_docking_rule(model, a, b)` to the model's rules unless a
+/// rule already docks `a` to `b` (either order). Returns the index of the
+/// added rule, or of the first existing one.
+int add_derived_rule(Morphable_part_model& model, const Site_ref& a, const Site_ref& b);
 
 /// Appends the repetition rule of every part type with exactly two docking
 /// sites, both boundary loops of equal size, that no rule docks yet. The

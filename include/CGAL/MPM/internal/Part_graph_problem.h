@@ -37,15 +37,52 @@ using Part_target_policy =
 // Deviations of a pair cluster's modes.
 using Pair_sigma_policy = std::function<Eigen::VectorXd(const Shape_space& space)>;
 
+// A node whose part gained seam vertices inserted by differently sampled
+// dockings (Docking_rule::merged_seam): local vertices number_of_vertices + k
+// are the inserted ones (Part_node::vertices lists them after the type's),
+// each between two loop neighbours; its triangles and edges are the type's
+// with the border edges split. Empty `inserted`: the type as it is.
+struct Inserted_vertex
+{
+  int from = -1, to = -1; // local loop neighbours
+  double weight = 0.;     // (1 - weight) from + weight to
+};
+struct Part_refinement
+{
+  std::vector<Inserted_vertex> inserted;
+  std::vector<Triangle> triangles;
+  std::vector<Cluster_edge> edges;
+};
+
+// `points` (the type's local vertices) followed by the interpolated rows of
+// the inserted vertices.
+Point_matrix refine_points(const Point_matrix& points, const std::vector<Inserted_vertex>& inserted);
+
+// Rows of `modes` (3 per point) likewise extended.
+Eigen::MatrixXd refine_modes(const Eigen::MatrixXd& modes, const std::vector<Inserted_vertex>& inserted);
+
+// The matched seam points of a boundary docking: row k of `on_first`
+// (from the first part's points `first`) meets row k of `on_second`. Seams
+// sampled alike: the pairs of `rule.seam`; a merged seam: every merged
+// vertex, interpolated on the side where it is inserted.
+void seam_points(const Docking_rule& rule, const Point_matrix& first, const Point_matrix& second,
+                 Point_matrix& on_first, Point_matrix& on_second);
+
+// Local vertices of side `side` on the seam of `rule` (sorted).
+std::vector<int> seam_locals(const Docking_rule& rule, int side);
+
 // Builds one part cluster per node and one pair cluster per edge over
 // `mesh` (the rest / initial positions), and the coupled same-type
 // neighbours. Requires every node's `vertices` (local -> mesh vertex) and
 // `motion` (space frame -> rest placement), and every edge's `motion` (pair
-// space frame -> rest placement). Pair targets are assembled from the placed
+// space frame -> rest placement). `refinements` (one per node, optional):
+// parts with inserted seam vertices (their means and modes interpolated,
+// their triangles split; the inserted vertices fade like the seam). Pair targets are assembled from the placed
 // part targets (parts and pairs ask for the same shape), see `pair_target`.
 Embedding_problem make_part_graph_problem(const Morphable_part_model& model, const Part_graph& graph,
                                           const Indexed_mesh& mesh, const Part_target_policy& policy,
-                                          const Pair_sigma_policy& pair_sigmas);
+                                          const Pair_sigma_policy& pair_sigmas,
+                                          const std::vector<Part_refinement>* refinements = nullptr);
 
 // The pair geometry of two placed part targets (see editing.cpp's history):
 // the second part is placed on the first by their shared seam (boundary
