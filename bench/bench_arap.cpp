@@ -12,6 +12,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <exception>
 #include <string>
 
 namespace {
@@ -21,42 +22,62 @@ using mpm_bench::Bench_model;
 
 void set_counters(benchmark::State& state, Bench_model model, const mpm_bench::Memory_probe& memory)
 {
-  state.counters["vertices"] = mpm_bench::synthetic_model(model).mesh.mesh.number_of_vertices();
+  state.counters["vertices"] = mpm_bench::bench_mesh(model).mesh.number_of_vertices();
   if(memory.extra_peak_mb() >= 0.) state.counters["peak_MB"] = memory.extra_peak_mb();
 }
 
 void BM_arap_iteration(benchmark::State& state, Bench_model model)
 {
+  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
+     !error.empty()) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
-  Arap_deformation arap(mpm_bench::synthetic_model(model).mesh.mesh);
-  arap.set_handles(handles);
-  arap.preprocess();
-  for(auto _ : state) arap.deform_one_iteration();
+  try {
+    Arap_deformation arap(mpm_bench::bench_mesh(model).mesh);
+    arap.set_handles(handles);
+    arap.preprocess();
+    for(auto _ : state) arap.deform_one_iteration();
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
   set_counters(state, model, memory);
 }
 
 void BM_arap_preprocess(benchmark::State& state, Bench_model model)
 {
+  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
+     !error.empty()) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
-  for(auto _ : state) {
-    state.PauseTiming();
-    // A fresh object each time: a factorization is cached until the handle vertices change.
-    Arap_deformation arap(mpm_bench::synthetic_model(model).mesh.mesh);
-    arap.set_handles(handles);
-    state.ResumeTiming();
-    arap.preprocess();
+  try {
+    for(auto _ : state) {
+      state.PauseTiming();
+      // A fresh object each time: a factorization is cached until the handle vertices change.
+      Arap_deformation arap(mpm_bench::bench_mesh(model).mesh);
+      arap.set_handles(handles);
+      state.ResumeTiming();
+      arap.preprocess();
+    }
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
   }
   set_counters(state, model, memory);
 }
 
 const bool registered = [] {
-  for(Bench_model model : {Bench_model::hand_3k, Bench_model::hand_23k, Bench_model::spider_66k}) {
+  for(Bench_model model : mpm_bench::all_models()) {
     const std::string name = mpm_bench::model_name(model);
     auto* iteration = benchmark::RegisterBenchmark(("BM_iteration/" + name + "/arap").c_str(), BM_arap_iteration, model)
                           ->ArgName("handles")->Unit(benchmark::kMillisecond);
-    if(model != Bench_model::hand_3k) iteration->Arg(1);
+    if(model == Bench_model::hand_23k || model == Bench_model::spider_66k) iteration->Arg(1);
     iteration->Arg(mpm_bench::bench_handles);
     benchmark::RegisterBenchmark(("BM_factor/" + name + "/arap").c_str(), BM_arap_preprocess, model)
         ->ArgName("handles")->Arg(mpm_bench::bench_handles)->Unit(benchmark::kMillisecond);

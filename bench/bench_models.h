@@ -9,34 +9,99 @@
 #include <CGAL/MPM/Editing.h>
 #include <CGAL/MPM/Embedding_problem.h>
 #include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Morphable_part_model.h>
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
 #include <cstdlib>
+#include <exception>
 #if defined(__GLIBC__) || defined(__linux__)
 #include <malloc.h>
 #endif
 #include <fstream>
+#include <iostream>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
+#include <vector>
+#include <unistd.h>
 
 namespace mpm_bench {
 
 /// The paper's yardsticks (Table 6.1): a 23k-vertex hand and a 66k-vertex
 /// scorpion, for which the synthetic spider stands in; plus a 3k-vertex hand
-/// small enough for the direct (reference) global step.
-enum class Bench_model { hand_3k, hand_23k, spider_66k };
+/// small enough for the direct (reference) global step. And real meshes from
+/// CGAL's data (Debian's libcgal-demo: diplodocus 24k, armadillo 26k, refined
+/// elephant 44k vertices), each learned as one part: no shape modes, pure
+/// elastic MPM, the fair speed comparison with ARAP.
+enum class Bench_model { hand_3k, hand_23k, spider_66k, diplodocus, armadillo, refined_elephant };
 
-/// The model's name in benchmark names (`BM_iteration/hand_23k/...`).
+/// The synthetic models.
+inline std::vector<Bench_model> synthetic_models()
+{
+  return {Bench_model::hand_3k, Bench_model::hand_23k, Bench_model::spider_66k};
+}
+
+/// Whether the model is a real mesh read from `data_directory()`.
+inline bool is_real_mesh(Bench_model which)
+{
+  return which == Bench_model::diplodocus || which == Bench_model::armadillo || which == Bench_model::refined_elephant;
+}
+
+/// The model's name in benchmark names (`BM_iteration/hand_23k/...`); for a
+/// real mesh also its file name without `.off`.
 inline const char* model_name(Bench_model which)
 {
   switch(which) {
   case Bench_model::hand_3k: return "hand_3k";
   case Bench_model::hand_23k: return "hand_23k";
-  default: return "spider_66k";
+  case Bench_model::spider_66k: return "spider_66k";
+  case Bench_model::diplodocus: return "diplodocus";
+  case Bench_model::armadillo: return "armadillo";
+  default: return "refined_elephant";
   }
+}
+
+/// Where the real meshes are: `$MPM_DATA_DIR`, else `data/` in the build
+/// directory (next to `bench/`, where `bench/run_benchmarks.sh` extracts
+/// them from `/usr/share/doc/libcgal-dev/data.tar.gz`).
+inline std::string data_directory()
+{
+  if(const char* dir = std::getenv("MPM_DATA_DIR"); dir && *dir) return dir;
+  char exe[4096];
+  const ssize_t size = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+  if(size <= 0) return "data";
+  std::string path(exe, std::size_t(size)); // <build>/bench/mpm_bench
+  for(int up = 0; up < 2 && path.find('/') != std::string::npos; ++up) path.erase(path.rfind('/'));
+  return path + "/data";
+}
+
+inline std::string real_mesh_path(Bench_model which) { return data_directory() + "/" + model_name(which) + ".off"; }
+
+/// The real meshes whose files exist; says once on stderr which are skipped.
+inline std::vector<Bench_model> available_real_meshes()
+{
+  static const std::vector<Bench_model> available = [] {
+    std::vector<Bench_model> found;
+    for(Bench_model m : {Bench_model::diplodocus, Bench_model::armadillo, Bench_model::refined_elephant}) {
+      if(std::ifstream(real_mesh_path(m)).good()) found.push_back(m);
+      else
+        std::cerr << "mpm_bench: " << real_mesh_path(m) << " not found, skipping the " << model_name(m)
+                  << " benchmarks (set MPM_DATA_DIR, or let bench/run_benchmarks.sh extract CGAL's data)\n";
+    }
+    return found;
+  }();
+  return available;
+}
+
+/// Synthetic models, then the real meshes that are available.
+inline std::vector<Bench_model> all_models()
+{
+  std::vector<Bench_model> models = synthetic_models();
+  for(Bench_model m : available_real_meshes()) models.push_back(m);
+  return models;
 }
 
 /// Seed of the held-out pose all benchmark handles pull towards.
@@ -60,11 +125,59 @@ inline const CGAL::MPM::Synthetic_model& synthetic_model(Bench_model which)
   return found->second;
 }
 
+/// The labelled mesh of a model: the synthetic model's, or a real mesh read
+/// from `real_mesh_path()` with every face labelled 0 (one part). Throws
+/// `Input_error` when the file cannot be read.
+inline const CGAL::MPM::Labeled_mesh& bench_mesh(Bench_model which)
+{
+  if(!is_real_mesh(which)) return synthetic_model(which).mesh;
+  static std::map<Bench_model, CGAL::MPM::Labeled_mesh> cache;
+  auto found = cache.find(which);
+  if(found == cache.end()) {
+    CGAL::MPM::Labeled_mesh labeled;
+    labeled.source = real_mesh_path(which);
+    labeled.mesh = CGAL::MPM::read_mesh_file(labeled.source).mesh;
+    labeled.face_labels.assign(labeled.mesh.triangles.size(), 0);
+    found = cache.emplace(which, std::move(labeled)).first;
+  }
+  return found->second;
+}
+
+/// Annotation of a model: the synthetic model's, or none (one part, default parameters).
+inline const CGAL::MPM::Annotation& bench_annotation(Bench_model which)
+{
+  static const CGAL::MPM::Annotation none;
+  return is_real_mesh(which) ? none : synthetic_model(which).annotation;
+}
+
+/// A smooth displacement of a real mesh: a bend along its longest bounding-box
+/// axis, the ends moving by 5% of the bounding-box diagonal along the second
+/// longest axis (quadratic in the position along the longest one).
+inline CGAL::MPM::Point_matrix bent_pose(const CGAL::MPM::Point_matrix& rest)
+{
+  const Eigen::RowVector3d low = rest.colwise().minCoeff(), high = rest.colwise().maxCoeff();
+  const Eigen::RowVector3d extent = high - low;
+  int along = 0;
+  extent.maxCoeff(&along);
+  const int across = extent((along + 1) % 3) >= extent((along + 2) % 3) ? (along + 1) % 3 : (along + 2) % 3;
+  const double amplitude = 0.05 * extent.norm();
+  CGAL::MPM::Point_matrix pose = rest;
+  for(Eigen::Index v = 0; v < rest.rows(); ++v) {
+    const double s = 2. * (rest(v, along) - low(along)) / extent(along) - 1.; // -1 .. 1
+    pose(v, across) += amplitude * s * s;
+  }
+  return pose;
+}
+
+/// Where the handles pull to: the synthetic model's held-out pose, or the
+/// real mesh bent by `bent_pose()`.
 inline const CGAL::MPM::Point_matrix& held_out_pose(Bench_model which)
 {
   static std::map<Bench_model, CGAL::MPM::Point_matrix> cache;
   auto found = cache.find(which);
-  if(found == cache.end()) found = cache.emplace(which, synthetic_model(which).draw_pose(bench_pose_seed)).first;
+  if(found == cache.end())
+    found = cache.emplace(which, is_real_mesh(which) ? bent_pose(bench_mesh(which).mesh.points)
+                                                     : synthetic_model(which).draw_pose(bench_pose_seed)).first;
   return found->second;
 }
 
@@ -75,20 +188,18 @@ inline const CGAL::MPM::Handle_set& farthest_handles(Bench_model which, int coun
   const auto key = std::make_pair(which, count);
   auto found = cache.find(key);
   if(found == cache.end())
-    found = cache.emplace(key, CGAL::MPM::farthest_point_handles(synthetic_model(which).mesh.mesh, count,
+    found = cache.emplace(key, CGAL::MPM::farthest_point_handles(bench_mesh(which).mesh, count,
                                                                   held_out_pose(which))).first;
   return found->second;
 }
 
-/// The morphable part model learned from the synthetic model (one example).
+/// The morphable part model learned from the model's mesh (one example).
 inline const CGAL::MPM::Morphable_part_model& learned_model(Bench_model which)
 {
   static std::map<Bench_model, CGAL::MPM::Morphable_part_model> cache;
   auto found = cache.find(which);
-  if(found == cache.end()) {
-    const CGAL::MPM::Synthetic_model& s = synthetic_model(which);
-    found = cache.emplace(which, CGAL::MPM::learn_morphable_part_model(s.mesh, s.annotation)).first;
-  }
+  if(found == cache.end())
+    found = cache.emplace(which, CGAL::MPM::learn_morphable_part_model(bench_mesh(which), bench_annotation(which))).first;
   return found->second;
 }
 
@@ -100,6 +211,19 @@ inline const CGAL::MPM::Embedding_problem& deformation_problem(Bench_model which
   if(found == cache.end())
     found = cache.emplace(which, CGAL::MPM::make_deformation_problem(learned_model(which))).first;
   return found->second;
+}
+
+/// Runs `build` (reading, learning: the cached fixtures of a benchmark) and
+/// returns the message of what it threw, or an empty string.
+template <class Build>
+std::string prepare(Build build)
+{
+  try {
+    build();
+    return {};
+  } catch(const std::exception& e) {
+    return e.what();
+  }
 }
 
 /// Total number of shape modes over the problem's clusters.

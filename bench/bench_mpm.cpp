@@ -8,9 +8,14 @@
 //   BM_learn/<model>                                     learn_morphable_part_model()
 // <step> is every Global_step (direct only on the 3k hand: it refactors every
 // iteration), <solver> is ldlt (Eigen SimplicialLDLT) or cholmod (when the
-// library is built with CHOLMOD). Handles: 16 farthest-point handles pulling
-// towards a held-out pose, the same as ARAP's. Counters: vertices, clusters,
-// modes, peak_MB (peak resident memory above the start of the benchmark).
+// library is built with CHOLMOD). <model> is a synthetic model or, when their
+// files are found (bench_models.h), a real mesh learned as one part.
+// Handles: 16 farthest-point handles pulling towards a held-out pose (real
+// meshes: a smooth bend), the same as ARAP's. Counters: vertices, clusters,
+// modes, peak_MB (peak resident memory above the start of the benchmark);
+// BM_iteration also has the mean phase times of one iterate() from
+// Embedding_solver::last_iteration_timings(): local_step_ms, rhs_ms,
+// schur_ms, back_substitution_ms, direct_ms, energy_ms.
 #include "bench_models.h"
 
 #include <CGAL/MPM/Embedding_solver.h>
@@ -82,8 +87,21 @@ double bbox_diagonal(const CGAL::MPM::Point_matrix& p)
   return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
 }
 
+// Builds the model's cached problem and handles (a real mesh is read and
+// learned here); on failure, marks the benchmark as skipped with the message.
+bool fixtures_ready(benchmark::State& state, Bench_model model)
+{
+  const std::string error = mpm_bench::prepare([&] {
+    mpm_bench::deformation_problem(model);
+    mpm_bench::farthest_handles(model, int(state.range(0)));
+  });
+  if(!error.empty()) state.SkipWithError(error.c_str());
+  return error.empty();
+}
+
 void BM_iteration(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
 {
+  if(!fixtures_ready(state, model)) return;
   const Embedding_problem& problem = mpm_bench::deformation_problem(model);
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
@@ -91,7 +109,24 @@ void BM_iteration(benchmark::State& state, Bench_model model, Global_step step, 
     Embedding_solver mpm(problem, options_of(step, solver));
     mpm.set_handles(handles.vertices, handles.targets);
     mpm.iterate(); // anything done lazily on the first iteration is factorization, timed below
-    for(auto _ : state) benchmark::DoNotOptimize(mpm.iterate());
+    CGAL::MPM::Iteration_timings sum;
+    for(auto _ : state) {
+      benchmark::DoNotOptimize(mpm.iterate());
+      const CGAL::MPM::Iteration_timings& t = mpm.last_iteration_timings();
+      sum.local_step_ms += t.local_step_ms;
+      sum.right_hand_side_ms += t.right_hand_side_ms;
+      sum.schur_ms += t.schur_ms;
+      sum.back_substitution_ms += t.back_substitution_ms;
+      sum.direct_ms += t.direct_ms;
+      sum.energy_ms += t.energy_ms;
+    }
+    const auto mean = [](double ms) { return benchmark::Counter(ms, benchmark::Counter::kAvgIterations); };
+    state.counters["local_step_ms"] = mean(sum.local_step_ms);
+    state.counters["rhs_ms"] = mean(sum.right_hand_side_ms);
+    state.counters["schur_ms"] = mean(sum.schur_ms);
+    state.counters["back_substitution_ms"] = mean(sum.back_substitution_ms);
+    state.counters["direct_ms"] = mean(sum.direct_ms);
+    state.counters["energy_ms"] = mean(sum.energy_ms);
   } catch(const std::exception& e) {
     state.SkipWithError(e.what());
     return;
@@ -101,6 +136,7 @@ void BM_iteration(benchmark::State& state, Bench_model model, Global_step step, 
 
 void BM_factor(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
 {
+  if(!fixtures_ready(state, model)) return;
   const Embedding_problem& problem = mpm_bench::deformation_problem(model);
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
@@ -126,6 +162,7 @@ void BM_factor(benchmark::State& state, Bench_model model, Global_step step, Spa
 // moves by 1% of the bounding-box diagonal, back and forth every 10 frames.
 void BM_frame(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
 {
+  if(!fixtures_ready(state, model)) return;
   const Embedding_problem& problem = mpm_bench::deformation_problem(model);
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
@@ -157,11 +194,16 @@ void BM_frame(benchmark::State& state, Bench_model model, Global_step step, Spar
 
 void BM_learn(benchmark::State& state, Bench_model model)
 {
-  const CGAL::MPM::Synthetic_model& s = mpm_bench::synthetic_model(model);
-  mpm_bench::deformation_problem(model); // for the counters, outside the memory probe
+  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::deformation_problem(model); }); !error.empty()) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  // The problem is built for the counters, outside the memory probe.
+  const CGAL::MPM::Labeled_mesh& mesh = mpm_bench::bench_mesh(model);
+  const CGAL::MPM::Annotation& annotation = mpm_bench::bench_annotation(model);
   const mpm_bench::Memory_probe memory;
   for(auto _ : state) {
-    CGAL::MPM::Morphable_part_model learned = CGAL::MPM::learn_morphable_part_model(s.mesh, s.annotation);
+    CGAL::MPM::Morphable_part_model learned = CGAL::MPM::learn_morphable_part_model(mesh, annotation);
     benchmark::DoNotOptimize(learned.types.data());
     state.PauseTiming(); // not the destruction
     { const CGAL::MPM::Morphable_part_model dropped = std::move(learned); }
@@ -171,7 +213,7 @@ void BM_learn(benchmark::State& state, Bench_model model)
 }
 
 const bool registered = [] {
-  const std::vector<Bench_model> models{Bench_model::hand_3k, Bench_model::hand_23k, Bench_model::spider_66k};
+  const std::vector<Bench_model> models = mpm_bench::all_models();
   using Function = void (*)(benchmark::State&, Bench_model, Global_step, Sparse_solver);
   const std::pair<const char*, Function> kinds[] = {{"BM_iteration", BM_iteration}, {"BM_factor", BM_factor},
                                                     {"BM_frame", BM_frame}};
@@ -190,9 +232,10 @@ const bool registered = [] {
           if(function == BM_frame) b->Iterations(20);
         }
       }
-  for(Bench_model model : {Bench_model::hand_23k, Bench_model::spider_66k})
-    benchmark::RegisterBenchmark((std::string("BM_learn/") + mpm_bench::model_name(model)).c_str(), BM_learn, model)
-        ->Unit(benchmark::kMillisecond);
+  for(Bench_model model : models)
+    if(model != Bench_model::hand_3k)
+      benchmark::RegisterBenchmark((std::string("BM_learn/") + mpm_bench::model_name(model)).c_str(), BM_learn, model)
+          ->Unit(benchmark::kMillisecond);
   return true;
 }();
 
