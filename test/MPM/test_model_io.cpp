@@ -118,7 +118,7 @@ TEST(ModelIo, HeaderLayout)
 {
   const std::string bytes = serialize_model(sample_model());
   EXPECT_EQ(bytes.substr(0, 8), "CGALMPM\n");
-  EXPECT_EQ(bytes.substr(8, 4), std::string("\x01\x00\x00\x00", 4));
+  EXPECT_EQ(bytes.substr(8, 4), std::string("\x02\x00\x00\x00", 4)); // format version 2
   std::uint64_t length = 0;
   for(int i = 0; i < 8; ++i) length |= std::uint64_t(static_cast<unsigned char>(bytes[12 + i])) << (8 * i);
   EXPECT_EQ(length + 24, bytes.size());
