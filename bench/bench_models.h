@@ -36,12 +36,12 @@ namespace mpm_bench {
 /// CGAL's data (Debian's libcgal-demo: diplodocus 24k, armadillo 26k, refined
 /// elephant 44k vertices), each learned as one part: no shape modes, pure
 /// elastic MPM, the fair speed comparison with ARAP.
-enum class Bench_model { hand_3k, hand_23k, spider_66k, diplodocus, armadillo, refined_elephant };
+enum class Bench_model { hand_3k, spine_16k, hand_23k, spider_66k, diplodocus, armadillo, refined_elephant };
 
 /// The synthetic models.
 inline std::vector<Bench_model> synthetic_models()
 {
-  return {Bench_model::hand_3k, Bench_model::hand_23k, Bench_model::spider_66k};
+  return {Bench_model::hand_3k, Bench_model::spine_16k, Bench_model::hand_23k, Bench_model::spider_66k};
 }
 
 /// Whether the model is a real mesh read from `data_directory()`.
@@ -56,6 +56,7 @@ inline const char* model_name(Bench_model which)
 {
   switch(which) {
   case Bench_model::hand_3k: return "hand_3k";
+  case Bench_model::spine_16k: return "spine_16k";
   case Bench_model::hand_23k: return "hand_23k";
   case Bench_model::spider_66k: return "spider_66k";
   case Bench_model::diplodocus: return "diplodocus";
@@ -117,9 +118,13 @@ inline const CGAL::MPM::Synthetic_model& synthetic_model(Bench_model which)
   auto found = cache.find(which);
   if(found == cache.end()) {
     CGAL::MPM::Synthetic_options options;
-    options.vertices = which == Bench_model::hand_3k ? 3000 : which == Bench_model::hand_23k ? 23000 : 66000;
-    const auto family =
-        which == Bench_model::spider_66k ? CGAL::MPM::Synthetic_family::spider : CGAL::MPM::Synthetic_family::hand;
+    options.vertices = which == Bench_model::hand_3k     ? 3000
+                       : which == Bench_model::spine_16k ? 16000
+                       : which == Bench_model::hand_23k  ? 23000
+                                                         : 66000;
+    const auto family = which == Bench_model::spider_66k  ? CGAL::MPM::Synthetic_family::spider
+                        : which == Bench_model::spine_16k ? CGAL::MPM::Synthetic_family::spine
+                                                          : CGAL::MPM::Synthetic_family::hand;
     found = cache.emplace(which, CGAL::MPM::make_synthetic_model(family, options)).first;
   }
   return found->second;

@@ -60,7 +60,7 @@ def sig3(x):  # 3 significant digits without an exponent: 0.000741, 1.09, 232, 2
     return "%.*f" % (max(0, 2 - int(math.floor(math.log10(abs(x))))), x)
 fmt = lambda x, f=None: "-" if x is None else (f % x if f else "%.1f" % x if 10 <= x < 100 else sig3(x))
 get = lambda kind, model, variant: rows.get((kind, model, variant))
-synthetic = lambda m: m.split("_")[0] in ("hand", "spider")
+synthetic = lambda m: m.split("_")[0] in ("hand", "spider", "spine")
 vertices = {k[1]: b["vertices"] for k, b in rows.items() if "vertices" in b}
 # Synthetic models by size, then the real meshes by size.
 models = sorted({k[1] for k in rows}, key=lambda m: (not synthetic(m), vertices.get(m, 0)))
