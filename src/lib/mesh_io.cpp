@@ -23,6 +23,7 @@
 #include <limits>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 #include <string_view>
 #include <unordered_map>
 
@@ -55,6 +56,10 @@ std::string printable(std::string_view token)
 
 std::string face_name(int f) { return "face " + std::to_string(f); }
 std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
+
+// Largest coordinate magnitude accepted: its square, and sums of a few such
+// squares, stay far below the largest double (1.8e308).
+constexpr double max_coordinate_magnitude = 1e150;
 
 // ----------------------------------------------------------------------------
 // Text scanning, shared by the OFF header check, the diagnosis of files CGAL
@@ -176,6 +181,23 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
   Token t;
   if(!s.next(t)) return false;
   bool counts_follow = true;
+  // CGAL's keyword ends at the first character that is not alphanumeric,
+  // which it consumes ("OFF/4" is "OFF" and the vertex count 4).
+  std::string_view after_keyword_character;
+  {
+    std::size_t k = 0;
+    while(k < t.text.size() && std::isalnum(static_cast<unsigned char>(t.text[k]))) ++k;
+    if(k >= 3 && k < t.text.size() && t.text.substr(k - 3, 3) == "OFF") {
+      after_keyword_character = t.text.substr(k + 1);
+      t.text = t.text.substr(0, k);
+    }
+  }
+  if(!after_keyword_character.empty()) {
+    Token nv = t, nf;
+    nv.text = after_keyword_character;
+    if(!s.next(nf)) return false;
+    return parse_integer(nv.text, h.vertices) && parse_integer(nf.text, h.faces);
+  }
   if(t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF") {
     if(t.text.find('n') != std::string_view::npos) { // nOFF: a dimension precedes the counts
       Token dimension;
@@ -231,6 +253,94 @@ void check_off_counts_fit(const std::string& path, std::uintmax_t file_size)
                       "announces " + std::to_string(h.vertices) + " vertices and " +
                         std::to_string(h.faces) + " faces, more than a file of " +
                         std::to_string(file_size) + " bytes can hold (truncated or corrupt)");
+}
+
+// CGAL's PLY header reader attaches each `property` line to the last
+// `element` and has undefined behaviour (back() of an empty vector) for a
+// property before any element; it reads an element count as std::size_t,
+// so `-4` becomes 2^64 - 4 and the reader loops (and allocates) that many
+// times. Refuse such headers first. Lines are split as CGAL splits them;
+// the check stops where CGAL's would stop.
+void check_ply_header(const std::string& path, std::uintmax_t file_size)
+{
+  std::ifstream in(path, std::ios::in | std::ios::binary);
+  std::string line, element_name;
+  bool element_seen = false;
+  for(int number = 1; std::getline(in, line); ++number) {
+    std::istringstream iss(line);
+    std::string keyword;
+    if(number == 1 && !(iss >> keyword && keyword == "ply")) return; // CGAL refuses the signature
+    if(number <= 2) continue; // the format line, checked by CGAL
+    if(!(iss >> keyword) || keyword == "end_header") return;
+    if(keyword == "element") {
+      element_seen = true;
+      std::string name, count;
+      if(!(iss >> name >> count)) return; // CGAL refuses the line
+      element_name = name;
+      const std::string element = "header line " + std::to_string(number);
+      if(count[0] == '-')
+        throw Input_error(path, element, "element " + printable(name) + " has a negative count " +
+                                           printable(count));
+      // Every element takes at least one byte, except ones without
+      // properties, which are never meaningful in a mesh file.
+      const unsigned long long n = std::strtoull(count.c_str(), nullptr, 10);
+      if(n > file_size)
+        throw Input_error(path, element, "announces " + printable(count) + " elements " + printable(name) +
+                                           ", more than a file of " + std::to_string(file_size) +
+                                           " bytes can hold (truncated or corrupt)");
+    }
+    if(keyword == "property" && !element_seen)
+      throw Input_error(path, "header line " + std::to_string(number),
+                        "a property declared before any element (malformed PLY header)");
+    // CGAL reads coordinates only from float or double properties: it
+    // dereferences a null pointer for any other type.
+    std::string type, name;
+    if(keyword == "property" && element_name == "vertex" && iss >> type >> name
+       && (name == "x" || name == "y" || name == "z") && type != "float" && type != "float32"
+       && type != "double" && type != "float64")
+      throw Input_error(path, "header line " + std::to_string(number),
+                        "vertex coordinate " + printable(name) + " has type " + printable(type) +
+                          " (supported: float, double)");
+  }
+}
+
+// CGAL's ASCII OFF reader reads the numbers of a face line (the corner
+// count, then the vertex indices) as doubles and casts them to std::size_t:
+// undefined behaviour for -1 or less and for 2^64 or more. Refuse such
+// numbers first. Faces are found as diagnose_off() finds them; anything else
+// is left to CGAL.
+void check_off_face_numbers(const std::string& path)
+{
+  const std::string text = internal::read_file(path);
+  Text_scanner s(text);
+  Off_header h;
+  if(!parse_off_header(text, h, s) || h.binary) return;
+  Token t;
+  for(std::uint64_t v = 0; v < h.vertices; ++v) {
+    if(!s.next(t)) return;
+    s.rest_of_line();
+  }
+  // Whether `token` starts with a number that has no std::size_t value.
+  const auto out_of_range = [](std::string_view token, double& value) {
+    const std::string copy(token);
+    char* end = nullptr;
+    value = std::strtod(copy.c_str(), &end);
+    return end != copy.c_str() && !(value > -1. && value < 18446744073709551616.);
+  };
+  for(std::uint64_t f = 0; f < h.faces; ++f) {
+    if(!s.next(t)) return;
+    const std::string element = face_name(int(std::min<std::uint64_t>(f, std::numeric_limits<int>::max())));
+    double corners;
+    if(out_of_range(t.text, corners))
+      throw Input_error(path, element, "line " + std::to_string(t.line) + ": corner count " + printable(t.text) +
+                                         " is not a non-negative integer");
+    const std::vector<Token> line = s.rest_of_line();
+    double index;
+    for(std::size_t c = 0; c < line.size() && double(c) < corners; ++c)
+      if(out_of_range(line[c].text, index))
+        throw Input_error(path, element, "line " + std::to_string(t.line) + ": vertex index " +
+                                           printable(line[c].text) + " is out of range");
+  }
 }
 
 // Finds why CGAL rejected an ASCII OFF file, so that the message names the
@@ -362,11 +472,28 @@ void check_mesh_geometry(const Indexed_mesh& mesh, const std::string& source,
       c << mesh.points(v, 0) << ", " << mesh.points(v, 1) << ", " << mesh.points(v, 2);
       throw Input_error(source, vertex_name(v), "non-finite coordinate (" + c.str() + ")");
     }
-  const double diagonal_squared =
-    n == 0 ? 0. : (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).squaredNorm();
+  // Squared lengths (the bounding box, areas, every energy) must not
+  // overflow: a coordinate beyond 1e150 in magnitude is refused rather than
+  // turned into infinities downstream.
+  for(int v = 0; v < n; ++v) {
+    Eigen::Index axis;
+    const double largest = mesh.points.row(v).cwiseAbs().maxCoeff(&axis);
+    if(largest > max_coordinate_magnitude) {
+      std::ostringstream c;
+      c << mesh.points(v, axis);
+      throw Input_error(source, vertex_name(v), "coordinate " + c.str() +
+                                                  " is too large (beyond 1e150 in magnitude, squared lengths "
+                                                  "would overflow)");
+    }
+  }
+  // The bounding-box diagonal, without underflow for tiny coordinates.
+  const double diagonal =
+    n == 0 ? 0. : (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).stableNorm();
   // Twice the area of a triangle counted as flat: 1e-14 of the squared
   // bounding-box diagonal, far below any modelled feature yet above rounding.
-  const double flat_cross_norm = 2e-14 * diagonal_squared;
+  // Edges are measured in diagonals, so that the test holds at any scale
+  // (squares of coordinates near 1e-160 would underflow to zero).
+  const double flat_cross_norm = 2e-14;
 
   for(int t = 0; t < mesh.number_of_faces(); ++t) {
     const Triangle& tri = mesh.triangles[t];
@@ -382,7 +509,7 @@ void check_mesh_geometry(const Indexed_mesh& mesh, const std::string& source,
       throw Input_error(source, element, "degenerate triangle (vertices " + corners + ")");
     const Eigen::Vector3d a = mesh.points.row(tri[0]), b = mesh.points.row(tri[1]),
                           c = mesh.points.row(tri[2]);
-    if((b - a).cross(c - a).norm() <= flat_cross_norm)
+    if(diagonal == 0. || ((b - a) / diagonal).cross((c - a) / diagonal).norm() <= flat_cross_norm)
       throw Input_error(source, element, "degenerate triangle (zero area, vertices " + corners + ")");
   }
 }
@@ -497,6 +624,10 @@ Mesh_file read_mesh_file(const std::string& path)
                                   " (supported: .off, .obj, .ply, .stl)");
   if(ext == ".off")
     check_off_counts_fit(path, size);
+  if(ext == ".off")
+    check_off_face_numbers(path);
+  if(ext == ".ply")
+    check_ply_header(path, size);
 
   std::vector<Point_3> points;
   std::vector<Bounded_polygon> polygons;
@@ -506,12 +637,17 @@ Mesh_file read_mesh_file(const std::string& path)
     ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
   } catch(const Corner_limit_exceeded&) {
     throw Input_error(path, "", "a face announces more corners than the file can hold (corrupt file)");
+  } catch(const std::length_error&) {
+    // CGAL's PLY reader sizes a list from a (possibly negative) count it read.
+    throw Input_error(path, "", "cannot be read as " + ext.substr(1) + " (a list size is negative or absurd: corrupt file)");
   }
   if(!ok) {
     if(ext == ".off") diagnose_off(path, internal::read_file(path));
     if(ext == ".obj") diagnose_obj(path, internal::read_file(path));
     throw Input_error(path, "", "cannot be read as " + ext.substr(1) + " (malformed or truncated file)");
   }
+  if(polygons.empty() && ext == ".stl") // CGAL reads a cut or foreign STL file as one without facets
+    throw Input_error(path, "", "contains no faces (an empty, truncated or non-STL file)");
   return mesh_from_polygons(path, points, polygons, ext == ".obj");
 }
 

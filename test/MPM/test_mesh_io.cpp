@@ -59,7 +59,7 @@ TEST(MeshIo, PlyCarriesFaceColours)
   const Mesh_file r = read_mesh_file(path);
   EXPECT_EQ(r.mesh.points, m.points);
   EXPECT_EQ(r.mesh.triangles, m.triangles);
-  MPM_EXPECT_INPUT_ERROR(write_mesh_file(m, dir.file("x.ply"), &(colors = colors.topRows(2)).eval()),
+  MPM_EXPECT_INPUT_ERROR(write_mesh_file(m, dir.file("x.ply"), &(colors = Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>(colors.topRows(2))).eval()),
                          "x.ply", "2 face colours for 4 faces");
 }
 
