@@ -46,7 +46,10 @@ long hexa_grid_vertex_count(long n)
 Synthetic_model make_hexa_grid(const Synthetic_options& options)
 {
   const int target = options.vertices > 0 ? options.vertices : 51465;
-  long n = 1;
+  // Two lattice steps per side is the coarsest tile with interior points:
+  // with one, the height field vanishes everywhere but at the centre and the
+  // modes degenerate.
+  long n = 2;
   while(std::abs(hexa_grid_vertex_count(n + 1) - target) < std::abs(hexa_grid_vertex_count(n) - target))
     ++n;
   const int side = static_cast<int>(n);

@@ -409,3 +409,16 @@ TEST(Synthetic_scale, negative_size_is_an_input_error)
   o.vertices = -5;
   EXPECT_THROW(make_synthetic_model(Synthetic_family::hand, o), Input_error);
 }
+
+// Requests below a family's coarsest structure give that structure, finite.
+TEST(Synthetic, tiny_sizes_give_the_coarsest_finite_model)
+{
+  for(Synthetic_family f : all_synthetic_families())
+  {
+    Synthetic_options o;
+    o.vertices = 10;
+    const Synthetic_model m = make_synthetic_model(f, o);
+    EXPECT_TRUE(m.mesh.mesh.points.allFinite()) << family_name(f);
+    EXPECT_GT(m.mesh.mesh.number_of_faces(), 0) << family_name(f);
+  }
+}
