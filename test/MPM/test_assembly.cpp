@@ -16,6 +16,8 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "Mesh_checks.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -45,27 +47,8 @@ const Morphable_part_model& model_of(Synthetic_family family)
 
 double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 
-int border_edges(const std::vector<Triangle>& triangles)
-{
-  std::map<std::pair<int, int>, int> count;
-  for(const Triangle& t : triangles)
-    for(int k = 0; k < 3; ++k) ++count[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
-  int border = 0;
-  for(const auto& [edge, c] : count) border += c == 1;
-  return border;
-}
-
-bool self_intersects(const Indexed_mesh& mesh)
-{
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  CGAL::Surface_mesh<K::Point_3> sm;
-  std::vector<CGAL::Surface_mesh<K::Point_3>::Vertex_index> v;
-  for(int i = 0; i < mesh.number_of_vertices(); ++i)
-    v.push_back(sm.add_vertex(K::Point_3(mesh.points(i, 0), mesh.points(i, 1), mesh.points(i, 2))));
-  for(const Triangle& t : mesh.triangles)
-    EXPECT_NE(sm.add_face(v[t[0]], v[t[1]], v[t[2]]), CGAL::Surface_mesh<K::Point_3>::null_face());
-  return CGAL::Polygon_mesh_processing::does_self_intersect(sm);
-}
+using mpm_test::border_edges;
+using mpm_test::self_intersects;
 
 // Every boundary docking maps each seam pair to one vertex.
 void expect_seams_shared(const Morphable_part_model& m, const Assembly& a)
