@@ -40,7 +40,9 @@ public:
   /// inconsistent orientation, repeated corner).
   explicit Arap_deformation(const Indexed_mesh& mesh, Arap_variant variant = Arap_variant::original);
   ~Arap_deformation();
+  /// Movable, not copyable.
   Arap_deformation(Arap_deformation&&) noexcept;
+  /// Movable, not copyable.
   Arap_deformation& operator=(Arap_deformation&&) noexcept;
 
   /// Sets the handles. Throws `Input_error` when they are invalid for the

@@ -52,7 +52,9 @@ public:
   explicit Laplacian_editing(const Indexed_mesh& mesh,
                              const Laplacian_editing_options& options = Laplacian_editing_options());
   ~Laplacian_editing();
+  /// Movable, not copyable.
   Laplacian_editing(Laplacian_editing&&) noexcept;
+  /// Movable, not copyable.
   Laplacian_editing& operator=(Laplacian_editing&&) noexcept;
 
   /// Sets the handles (see `validate_handles()`; an empty set is an

@@ -141,7 +141,11 @@ struct Random_edit_options
 {
   int min_edits = 1; ///< fewest edits applied
   int max_edits = 3; ///< most edits applied
-  bool insert = true, remove_segment = true, remove_branch = true, duplicate_branch = true; ///< allowed edits
+  /// Which edits may be drawn: insert a segment, remove a segment, remove a
+  /// branch, duplicate a branch.
+  /// @{
+  bool insert = true, remove_segment = true, remove_branch = true, duplicate_branch = true;
+  /// @}
   int min_nodes = 2; ///< a removal never leaves fewer nodes
 };
 

@@ -34,7 +34,9 @@ public:
   /// example does not exist.
   explicit Shape_space_fit(const Morphable_part_model& model, int example = 0);
   ~Shape_space_fit();
+  /// Movable, not copyable.
   Shape_space_fit(Shape_space_fit&&) noexcept;
+  /// Movable, not copyable.
   Shape_space_fit& operator=(Shape_space_fit&&) noexcept;
 
   /// Sets the handles (see `validate_handles()`; an empty set is an error).
