@@ -1,0 +1,613 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Session.h"
+
+#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/Arap_deformation.h>
+#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/Part_colors.h>
+#include <CGAL/MPM/Part_graph_editing.h>
+#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include <QEventLoop>
+#include <QTimer>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <map>
+#include <unordered_map>
+
+namespace mpm_demo {
+
+namespace MPM = CGAL::MPM;
+
+namespace {
+
+double milliseconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// ARAP is a baseline shown next to MPM: enough iterations to settle a drag
+// on the demo's meshes, with CGAL's movement tolerance.
+constexpr int arap_iterations_per_frame = 100;
+constexpr double arap_tolerance = 1e-4;
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// Solver thread
+
+Solver_thread::Solver_thread(QObject* parent) : QThread(parent) {}
+
+Solver_thread::~Solver_thread() { finish(); }
+
+void Solver_thread::post(Solve_request request)
+{
+  QMutexLocker lock(&mutex_);
+  pending_ = std::move(request);
+  has_pending_ = true;
+  wake_.wakeOne();
+}
+
+void Solver_thread::finish()
+{
+  {
+    QMutexLocker lock(&mutex_);
+    stop_ = true;
+    wake_.wakeOne();
+  }
+  wait();
+}
+
+void Solver_thread::run()
+{
+  std::unique_ptr<MPM::Embedding_solver> solver;
+  std::unique_ptr<MPM::Arap_deformation> arap;
+  std::shared_ptr<const MPM::Embedding_problem> built;
+  double built_coupling = 0.;
+  bool solver_has_handles = false;
+  for(;;)
+  {
+    Solve_request r;
+    {
+      QMutexLocker lock(&mutex_);
+      while(!has_pending_ && !stop_) wake_.wait(&mutex_);
+      if(stop_) return;
+      r = std::move(pending_);
+      has_pending_ = false;
+    }
+    Solve_frame f;
+    f.serial = r.serial;
+    try
+    {
+      if(r.problem != built || r.options.coupling_weight != built_coupling)
+      {
+        solver.reset();
+        arap.reset();
+        built.reset();
+        solver = std::make_unique<MPM::Embedding_solver>(*r.problem, r.options);
+        built = r.problem;
+        built_coupling = r.options.coupling_weight;
+        solver_has_handles = false;
+      }
+      else if(r.restart)
+      {
+        solver->reset();
+        if(arap) arap->reset();
+      }
+      if(!r.handle_vertices.empty())
+      {
+        solver->set_handles(r.handle_vertices, r.handle_targets);
+        solver_has_handles = true;
+      }
+      else if(solver_has_handles)
+      {
+        solver->clear_handles();
+        solver_has_handles = false;
+      }
+      const auto start = std::chrono::steady_clock::now();
+      const MPM::Solve_report report = solver->solve();
+      f.positions = solver->positions();
+      f.ms = milliseconds_since(start);
+      f.iterations = report.iterations;
+      f.converged = report.converged;
+      f.energy = report.energy();
+      if(!f.positions.allFinite())
+        throw MPM::Computation_error("the solver produced non-finite positions (try smaller drags)");
+    }
+    catch(const std::exception& e)
+    {
+      f.error = QString::fromStdString(e.what());
+      f.positions.resize(0, 3);
+    }
+    if(r.arap && built)
+    {
+      try
+      {
+        if(r.handle_vertices.empty()) throw MPM::Input_error("ARAP", "handles", "there are none: pick some first");
+        if(!arap) arap = std::make_unique<MPM::Arap_deformation>(r.problem->mesh);
+        MPM::Handle_set handles;
+        handles.vertices = r.handle_vertices;
+        handles.targets = r.handle_targets;
+        arap->set_handles(handles);
+        const auto start = std::chrono::steady_clock::now();
+        f.arap_iterations = arap->deform(arap_iterations_per_frame, arap_tolerance);
+        f.arap_positions = arap->positions();
+        f.arap_ms = milliseconds_since(start);
+      }
+      catch(const std::exception& e)
+      {
+        f.arap_error = QString::fromStdString(e.what());
+        f.arap_positions.resize(0, 3);
+      }
+    }
+    Q_EMIT frame_ready(f);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Session
+
+Session::Session(QObject* parent) : QObject(parent)
+{
+  qRegisterMetaType<mpm_demo::Solve_frame>("mpm_demo::Solve_frame");
+  connect(&thread_, &Solver_thread::frame_ready, this, &Session::on_frame, Qt::QueuedConnection);
+  thread_.start();
+}
+
+Session::~Session() { thread_.finish(); }
+
+void Session::load_synthetic(const std::string& family, int vertices, unsigned seed)
+{
+  MPM::Synthetic_options options;
+  options.vertices = vertices;
+  options.seed = seed;
+  const MPM::Synthetic_model synthetic = MPM::make_synthetic_model(MPM::parse_family(family), options);
+  adopt_model(MPM::learn_morphable_part_model(synthetic.mesh, synthetic.annotation),
+              QString("synthetic %1 (%2 vertices)")
+                .arg(QString::fromStdString(family))
+                .arg(synthetic.mesh.mesh.number_of_vertices()));
+}
+
+void Session::load_labeled_mesh(const std::string& mesh, const std::string& labels, const std::string& annotation)
+{
+  const MPM::Labeled_mesh labeled = MPM::read_labeled_mesh(mesh, labels);
+  MPM::validate_labeled_mesh(labeled);
+  const MPM::Annotation a = annotation.empty() ? MPM::Annotation() : MPM::read_annotation(annotation);
+  adopt_model(MPM::learn_morphable_part_model(labeled, a), QString::fromStdString(mesh));
+}
+
+void Session::load_model(const std::string& path)
+{
+  adopt_model(MPM::load_model(path), QString::fromStdString(path));
+}
+
+void Session::adopt_model(MPM::Morphable_part_model&& model, const QString& source)
+{
+  if(model.examples.empty()) throw MPM::Input_error(source.toStdString(), "model", "has no training example");
+  // Derived repetition rules let the grammar lengthen chains (a finger).
+  MPM::add_repetition_rules(model);
+  model_ = std::move(model);
+  has_model_ = true;
+  source_ = source;
+  edit_graph_ = MPM::part_graph_of_example(model_, 0);
+  graph_edited_ = false;
+  mode_ = Edit_mode::deform;
+  rest_ = MPM::Indexed_mesh(); // a new scene in any case
+  rebuild();
+}
+
+const MPM::Part_graph& Session::shown_graph() const
+{
+  return graph_edited_ ? assembly_.graph : model_.examples.front().graph;
+}
+
+void Session::rebuild()
+{
+  MPM::Embedding_problem problem;
+  if(!graph_edited_)
+  {
+    switch(mode_)
+    {
+    case Edit_mode::deform: problem = MPM::make_deformation_problem(model_, 0); break;
+    case Edit_mode::symmetrize:
+    {
+      MPM::Symmetrization_options options;
+      options.relative_sigma = symmetry_sigma_;
+      problem = MPM::make_symmetrization_problem(model_, 0, options);
+      break;
+    }
+    case Edit_mode::caricature: problem = MPM::make_caricature_problem(model_, caricature_factor_, 0); break;
+    }
+    const MPM::Training_example& example = model_.examples.front();
+    std::map<int, int> node_of_label;
+    for(std::size_t n = 0; n < example.graph.nodes.size(); ++n) node_of_label[example.graph.nodes[n].label] = int(n);
+    std::vector<int> face_nodes(example.face_labels.size(), -1);
+    for(std::size_t f = 0; f < face_nodes.size(); ++f)
+    {
+      const auto it = node_of_label.find(example.face_labels[f]);
+      if(it != node_of_label.end()) face_nodes[f] = it->second;
+    }
+    set_scene(example.mesh, example.graph, std::move(face_nodes));
+  }
+  else
+  {
+    // An assembly is edited through its parts' coordinates: the type means
+    // (symmetrize) or coordinates scaled away from them (caricature).
+    MPM::Part_graph graph = edit_graph_;
+    if(mode_ != Edit_mode::deform)
+    {
+      const double factor = mode_ == Edit_mode::symmetrize ? 0. : caricature_factor_;
+      for(MPM::Part_node& node : graph.nodes) node.coordinates *= factor;
+      for(MPM::Part_edge& edge : graph.edges) edge.coordinates *= factor;
+    }
+    MPM::Assembly_options options;
+    options.solver.coupling_weight = coupling_;
+    MPM::Assembly assembly = MPM::assemble(model_, graph, options);
+    problem = assembly.problem;
+    problem.mesh.points = assembly.mesh.points; // start from the embedding
+    assembly_ = std::move(assembly);
+    set_scene(assembly_.mesh, assembly_.graph, assembly_.face_nodes);
+  }
+  problem_ = std::make_shared<const MPM::Embedding_problem>(std::move(problem));
+  post(true);
+}
+
+void Session::set_scene(const MPM::Indexed_mesh& rest, const MPM::Part_graph& graph, std::vector<int> face_nodes)
+{
+  const bool same_connectivity = rest.triangles == rest_.triangles && rest.points.rows() == rest_.points.rows();
+  rest_ = rest;
+  face_nodes_ = std::move(face_nodes);
+  face_types_.assign(face_nodes_.size(), -1);
+  for(std::size_t f = 0; f < face_nodes_.size(); ++f)
+    if(face_nodes_[f] >= 0) face_types_[f] = graph.nodes[face_nodes_[f]].type;
+
+  seam_edges_.clear();
+  std::unordered_map<std::uint64_t, int> node_of_edge;
+  const auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
+  for(std::size_t f = 0; f < rest_.triangles.size(); ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const int a = rest_.triangles[f][c], b = rest_.triangles[f][(c + 1) % 3];
+      const auto [it, inserted] = node_of_edge.emplace(key(a, b), face_nodes_[f]);
+      if(!inserted && it->second != face_nodes_[f]) seam_edges_.push_back({{a, b}});
+    }
+
+  docking_vertices_.clear();
+  for(const MPM::Part_node& node : graph.nodes)
+    for(const MPM::Docking_site& site : model_.types[node.type].sites)
+      for(int local : site.vertices)
+        if(local < int(node.vertices.size())) docking_vertices_.push_back(node.vertices[local]);
+  std::sort(docking_vertices_.begin(), docking_vertices_.end());
+  docking_vertices_.erase(std::unique(docking_vertices_.begin(), docking_vertices_.end()), docking_vertices_.end());
+
+  if(!same_connectivity)
+  {
+    // Handles name vertices of the old mesh; the next request carries none.
+    handle_vertices_.clear();
+    handle_groups_.clear();
+    handle_offsets_.resize(0, 3);
+    frame_ = Solve_frame();
+    frame_.positions = rest_.points;
+    frame_.serial = serial_;
+    Q_EMIT scene_changed();
+  }
+}
+
+void Session::post(bool restart)
+{
+  if(!problem_) return;
+  Solve_request r;
+  r.serial = ++serial_;
+  r.problem = problem_;
+  r.options.coupling_weight = coupling_;
+  r.handle_vertices = handle_vertices_;
+  r.handle_targets = handle_targets();
+  r.arap = arap_;
+  r.restart = restart;
+  thread_.post(std::move(r));
+}
+
+void Session::on_frame(const Solve_frame& frame)
+{
+  // A frame of a request older than the current scene has other vertices.
+  if(frame.positions.rows() != 0 && frame.positions.rows() != rest_.points.rows()) return;
+  if(frame.arap_positions.rows() != 0 && frame.arap_positions.rows() != rest_.points.rows()) return;
+  const Point_matrix previous = frame_.positions;
+  frame_ = frame;
+  if(frame_.positions.rows() == 0) frame_.positions = previous.rows() == rest_.points.rows() ? previous : rest_.points;
+  Q_EMIT positions_changed();
+}
+
+bool Session::wait_until_solved(int timeout_ms)
+{
+  if(frame_.serial >= serial_) return true;
+  // Sleeps in an event loop (the solver thread has the cores) until the
+  // frame of the latest request or the time-out arrives.
+  QEventLoop loop;
+  QTimer::singleShot(timeout_ms, &loop, &QEventLoop::quit);
+  const QMetaObject::Connection c = connect(this, &Session::positions_changed, &loop, [this, &loop] {
+    if(frame_.serial >= serial_) loop.quit();
+  });
+  loop.exec();
+  disconnect(c);
+  return frame_.serial >= serial_;
+}
+
+// ---------------------------------------------------------------------------
+// Handles
+
+Point_matrix Session::handle_targets() const
+{
+  Point_matrix t(handle_vertices_.size(), 3);
+  for(std::size_t i = 0; i < handle_vertices_.size(); ++i)
+    t.row(i) = rest_.points.row(handle_vertices_[i]) + handle_offsets_.row(i);
+  return t;
+}
+
+int Session::handle_of_vertex(int vertex) const
+{
+  const auto it = std::find(handle_vertices_.begin(), handle_vertices_.end(), vertex);
+  return it == handle_vertices_.end() ? -1 : int(it - handle_vertices_.begin());
+}
+
+void Session::add_handle(int vertex)
+{
+  if(vertex < 0 || vertex >= rest_.number_of_vertices())
+    throw MPM::Input_error("handles", "vertex " + std::to_string(vertex),
+                           "is out of range (the mesh has " + std::to_string(rest_.number_of_vertices()) +
+                             " vertices)");
+  if(handle_of_vertex(vertex) >= 0) return;
+  const int group = handle_groups_.empty() ? 0 : *std::max_element(handle_groups_.begin(), handle_groups_.end()) + 1;
+  handle_vertices_.push_back(vertex);
+  handle_groups_.push_back(group);
+  // The new handle holds the vertex where it is shown now.
+  handle_offsets_.conservativeResize(handle_vertices_.size(), 3);
+  handle_offsets_.row(handle_offsets_.rows() - 1) = positions().row(vertex) - rest_.points.row(vertex);
+  post();
+}
+
+void Session::remove_handle(int index)
+{
+  if(index < 0 || index >= int(handle_vertices_.size()))
+    throw MPM::Input_error("handles", "handle " + std::to_string(index), "does not exist");
+  handle_vertices_.erase(handle_vertices_.begin() + index);
+  handle_groups_.erase(handle_groups_.begin() + index);
+  Point_matrix offsets(handle_vertices_.size(), 3);
+  for(int i = 0, j = 0; i < handle_offsets_.rows(); ++i)
+    if(i != index) offsets.row(j++) = handle_offsets_.row(i);
+  handle_offsets_ = offsets;
+  post();
+}
+
+void Session::group_handles(const std::vector<int>& indices)
+{
+  for(int i : indices)
+    if(i < 0 || i >= int(handle_vertices_.size()))
+      throw MPM::Input_error("handles", "handle " + std::to_string(i), "does not exist");
+  for(int i : indices) handle_groups_[i] = handle_groups_[indices.front()];
+}
+
+void Session::set_handles_per_part(int per_part)
+{
+  MPM::Labeled_mesh labeled;
+  labeled.mesh = rest_;
+  labeled.face_labels = face_nodes_;
+  labeled.source = source_.toStdString();
+  const MPM::Handle_set h = MPM::handles_per_part(labeled, per_part, positions());
+  handle_vertices_ = h.vertices;
+  handle_groups_.resize(h.vertices.size());
+  for(std::size_t i = 0; i < handle_groups_.size(); ++i) handle_groups_[i] = int(i);
+  handle_offsets_ = h.targets;
+  for(int i = 0; i < h.size(); ++i) handle_offsets_.row(i) -= rest_.points.row(h.vertices[i]);
+  post();
+}
+
+void Session::set_handles_farthest(int count)
+{
+  const MPM::Handle_set h = MPM::farthest_point_handles(rest_, count, positions());
+  handle_vertices_ = h.vertices;
+  handle_groups_.resize(h.vertices.size());
+  for(std::size_t i = 0; i < handle_groups_.size(); ++i) handle_groups_[i] = int(i);
+  handle_offsets_ = h.targets;
+  for(int i = 0; i < h.size(); ++i) handle_offsets_.row(i) -= rest_.points.row(h.vertices[i]);
+  post();
+}
+
+void Session::clear_handles()
+{
+  handle_vertices_.clear();
+  handle_groups_.clear();
+  handle_offsets_.resize(0, 3);
+  post();
+}
+
+void Session::drag_handle(int index, const Eigen::RowVector3d& delta)
+{
+  if(index < 0 || index >= int(handle_vertices_.size()))
+    throw MPM::Input_error("handles", "handle " + std::to_string(index),
+                           "does not exist (there are " + std::to_string(handle_vertices_.size()) + " handles)");
+  if(!delta.allFinite()) throw MPM::Input_error("drag", "offset", "is not finite");
+  for(std::size_t j = 0; j < handle_vertices_.size(); ++j)
+    if(handle_groups_[j] == handle_groups_[index]) handle_offsets_.row(j) += delta;
+  post();
+}
+
+// ---------------------------------------------------------------------------
+// Edits
+
+void Session::set_mode(Edit_mode mode)
+{
+  mode_ = mode;
+  rebuild();
+}
+
+void Session::set_caricature_factor(double factor)
+{
+  if(!std::isfinite(factor)) throw MPM::Input_error("caricature", "factor", "is not finite");
+  caricature_factor_ = factor;
+  mode_ = Edit_mode::caricature;
+  rebuild();
+}
+
+void Session::set_symmetry_sigma(double relative_sigma)
+{
+  if(!(relative_sigma > 0.) || !std::isfinite(relative_sigma))
+    throw MPM::Input_error("symmetrize", "relative sigma", "must be positive and finite");
+  symmetry_sigma_ = relative_sigma;
+  mode_ = Edit_mode::symmetrize;
+  rebuild();
+}
+
+void Session::set_coupling(double weight)
+{
+  if(!(weight >= 0.) || !std::isfinite(weight))
+    throw MPM::Input_error("coupling", "weight", "must be zero or positive and finite");
+  coupling_ = weight;
+  if(graph_edited_) rebuild();
+  else post();
+}
+
+void Session::set_arap(bool on)
+{
+  arap_ = on;
+  post();
+}
+
+void Session::reset()
+{
+  handle_offsets_.setZero();
+  frame_.positions = rest_.points;
+  frame_.arap_positions.resize(0, 3);
+  post(true);
+  Q_EMIT positions_changed();
+}
+
+// ---------------------------------------------------------------------------
+// Part graph
+
+int Session::root() const { return MPM::root_node(edit_graph_); }
+
+int Session::parent_edge(int node) const
+{
+  const int n = int(edit_graph_.nodes.size());
+  if(node < 0 || node >= n)
+    throw MPM::Input_error("part graph", "part " + std::to_string(node),
+                           "does not exist (there are " + std::to_string(n) + " parts)");
+  // Breadth-first from the root: the edge each node was reached by.
+  std::vector<int> reached_by(n, -2);
+  std::deque<int> queue{root()};
+  reached_by[root()] = -1;
+  while(!queue.empty())
+  {
+    const int a = queue.front();
+    queue.pop_front();
+    for(std::size_t e = 0; e < edit_graph_.edges.size(); ++e)
+    {
+      const MPM::Part_edge& edge = edit_graph_.edges[e];
+      const int b = edge.first == a ? edge.second : edge.second == a ? edge.first : -1;
+      if(b >= 0 && reached_by[b] == -2)
+      {
+        reached_by[b] = int(e);
+        queue.push_back(b);
+      }
+    }
+  }
+  if(reached_by[node] < 0)
+    throw MPM::Input_error("part graph", "part " + std::to_string(node),
+                           "is the root or not connected to it: pick a part that hangs from another one");
+  return reached_by[node];
+}
+
+int Session::insert_segment(int node)
+{
+  MPM::Part_graph graph = edit_graph_;
+  const int added = MPM::insert_segment(model_, graph, parent_edge(node));
+  edit_graph_ = std::move(graph);
+  graph_edited_ = true;
+  rebuild();
+  return added;
+}
+
+void Session::remove_segment(int node)
+{
+  MPM::Part_graph graph = edit_graph_;
+  MPM::remove_segment(model_, graph, node);
+  edit_graph_ = std::move(graph);
+  graph_edited_ = true;
+  rebuild();
+}
+
+int Session::duplicate_branch(int node)
+{
+  MPM::Part_graph graph = edit_graph_;
+  const int r = MPM::root_node(graph);
+  const int copy = MPM::duplicate_branch(model_, graph, node, r, r);
+  edit_graph_ = std::move(graph);
+  graph_edited_ = true;
+  rebuild();
+  return copy;
+}
+
+void Session::reset_graph()
+{
+  edit_graph_ = MPM::part_graph_of_example(model_, 0);
+  graph_edited_ = false;
+  rebuild();
+}
+
+std::vector<std::string> Session::describe_parts() const
+{
+  std::vector<std::string> lines;
+  for(std::size_t n = 0; n < edit_graph_.nodes.size(); ++n)
+  {
+    std::string line = "part " + std::to_string(n) + ": " + model_.types[edit_graph_.nodes[n].type].name + ", docked to";
+    for(const MPM::Part_edge& e : edit_graph_.edges)
+      if(e.first == int(n) || e.second == int(n)) line += " " + std::to_string(e.first == int(n) ? e.second : e.first);
+    if(int(n) == root()) line += " (root)";
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// ---------------------------------------------------------------------------
+// Saving
+
+void Session::save_mesh(const std::string& path, bool arap_result) const
+{
+  const Point_matrix& p = arap_result ? arap_positions() : positions();
+  if(p.rows() != rest_.points.rows())
+    throw MPM::Input_error(path, "mesh", arap_result ? "there is no ARAP result to save (turn ARAP on, add handles)"
+                                                     : "there is no result to save");
+  MPM::Indexed_mesh mesh;
+  mesh.points = p;
+  mesh.triangles = rest_.triangles;
+  Eigen::Matrix<unsigned char, Eigen::Dynamic, 3> colors(mesh.number_of_faces(), 3);
+  for(int f = 0; f < colors.rows(); ++f)
+  {
+    const MPM::Rgb_color c = MPM::part_type_color(face_types_[f]);
+    colors.row(f) << c[0], c[1], c[2];
+  }
+  MPM::write_mesh_file(mesh, path, &colors);
+}
+
+void Session::save_model(const std::string& path) const { MPM::save_model(model_, path); }
+
+void Session::save_handles(const std::string& path) const
+{
+  MPM::Handle_set h;
+  h.vertices = handle_vertices_;
+  h.targets = handle_targets();
+  MPM::write_handles(h, path);
+}
+
+} // namespace mpm_demo

@@ -1,0 +1,229 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The demo's state: a learned model, the part graph being shown (a training
+// example or an assembly edited from the grammar), the handles, the edit
+// mode, and a solver thread that embeds the latest request while the window
+// stays responsive. Everything is computed by the library's public API.
+#ifndef MPM_DEMO_SESSION_H
+#define MPM_DEMO_SESSION_H
+
+#include <CGAL/MPM/Assembly.h>
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Morphable_part_model.h>
+
+#include <QMutex>
+#include <QObject>
+#include <QString>
+#include <QThread>
+#include <QWaitCondition>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm_demo {
+
+using CGAL::MPM::Point_matrix;
+
+/// What the embedding pulls the shape toward.
+enum class Edit_mode
+{
+  deform,     ///< free-form deformation within the learned spaces
+  symmetrize, ///< every instance of a type toward the same shape
+  caricature  ///< instances scaled away from their type's mean
+};
+
+/// One job for the solver thread. Only the latest posted request is solved:
+/// mouse moves that arrive while the solver is busy replace each other.
+struct Solve_request
+{
+  std::uint64_t serial = 0;
+  std::shared_ptr<const CGAL::MPM::Embedding_problem> problem; ///< a new pointer rebuilds the solver
+  CGAL::MPM::Embedding_options options;
+  std::vector<int> handle_vertices;
+  Point_matrix handle_targets;
+  bool arap = false;    ///< also deform with CGAL's ARAP on the same handles
+  bool restart = false; ///< start from the rest positions (reset)
+};
+
+/// What the solver thread reports for one request.
+struct Solve_frame
+{
+  std::uint64_t serial = 0;
+  Point_matrix positions;      ///< MPM result
+  Point_matrix arap_positions; ///< ARAP result; empty when off or impossible
+  int iterations = 0;
+  bool converged = false;
+  double energy = 0.;
+  double ms = 0.;              ///< MPM solve time of this frame
+  int arap_iterations = 0;
+  double arap_ms = 0.;
+  QString error;               ///< the MPM solve failed (positions are the previous ones)
+  QString arap_error;          ///< why there is no ARAP result
+};
+
+/// Runs `Embedding_solver::solve()` (reduced global step, warm started) and
+/// `Arap_deformation::deform()` off the UI thread.
+class Solver_thread : public QThread
+{
+  Q_OBJECT
+public:
+  explicit Solver_thread(QObject* parent = nullptr);
+  ~Solver_thread() override;
+  /// Replaces the pending request (latest target wins) and wakes the thread.
+  void post(Solve_request request);
+  /// Asks the thread to finish and waits for it.
+  void finish();
+
+Q_SIGNALS:
+  void frame_ready(const mpm_demo::Solve_frame& frame);
+
+protected:
+  void run() override;
+
+private:
+  QMutex mutex_;
+  QWaitCondition wake_;
+  Solve_request pending_;
+  bool has_pending_ = false;
+  bool stop_ = false;
+};
+
+/// The model and everything the viewer and the batch script act on.
+class Session : public QObject
+{
+  Q_OBJECT
+public:
+  explicit Session(QObject* parent = nullptr);
+  ~Session() override;
+
+  /// \name Sources (each throws `Input_error` on bad input and leaves the session unchanged)
+  /// @{
+  void load_synthetic(const std::string& family, int vertices, unsigned seed);
+  void load_labeled_mesh(const std::string& mesh, const std::string& labels, const std::string& annotation);
+  void load_model(const std::string& path);
+  /// @}
+  bool has_model() const { return has_model_; }
+  const QString& source_name() const { return source_; }
+  const CGAL::MPM::Morphable_part_model& model() const { return model_; }
+
+  /// \name What is shown
+  /// @{
+  /// Connectivity and rest positions of the current problem.
+  const CGAL::MPM::Indexed_mesh& rest() const { return rest_; }
+  const Point_matrix& positions() const { return frame_.positions; }
+  const Point_matrix& arap_positions() const { return frame_.arap_positions; }
+  const std::vector<int>& face_types() const { return face_types_; }
+  const std::vector<int>& face_nodes() const { return face_nodes_; }
+  /// Mesh edges between faces of different parts.
+  const std::vector<std::array<int, 2>>& seam_edges() const { return seam_edges_; }
+  /// Vertices of the docking sites of all parts.
+  const std::vector<int>& docking_vertices() const { return docking_vertices_; }
+  /// The part graph shown (its nodes' vertices index `rest()`).
+  const CGAL::MPM::Part_graph& shown_graph() const;
+  bool graph_edited() const { return graph_edited_; }
+  const Solve_frame& last_frame() const { return frame_; }
+  /// @}
+
+  /// \name Handles (indices into the handle list; a group moves together)
+  /// @{
+  const std::vector<int>& handle_vertices() const { return handle_vertices_; }
+  const std::vector<int>& handle_groups() const { return handle_groups_; }
+  Point_matrix handle_targets() const;
+  int handle_of_vertex(int vertex) const;
+  void add_handle(int vertex);
+  void remove_handle(int index);
+  void group_handles(const std::vector<int>& indices);
+  void set_handles_per_part(int per_part);
+  void set_handles_farthest(int count);
+  void clear_handles();
+  /// Moves handle `index` and every handle of its group by `delta`.
+  void drag_handle(int index, const Eigen::RowVector3d& delta);
+  /// @}
+
+  /// \name Edits
+  /// @{
+  Edit_mode mode() const { return mode_; }
+  double caricature_factor() const { return caricature_factor_; }
+  double symmetry_sigma() const { return symmetry_sigma_; }
+  double coupling() const { return coupling_; }
+  bool arap() const { return arap_; }
+  void set_mode(Edit_mode mode);
+  void set_caricature_factor(double factor);
+  void set_symmetry_sigma(double relative_sigma);
+  void set_coupling(double weight);
+  void set_arap(bool on);
+  /// Handle offsets to zero and the solver back to the rest positions.
+  void reset();
+  /// @}
+
+  /// \name Part-graph editing (the grammar's rules plus derived repetition rules)
+  /// @{
+  /// The node from which `node`'s branch hangs: its neighbour toward the root.
+  int parent_edge(int node) const;
+  /// Inserts a segment into the docking between `node` and its neighbour toward the root; returns the new node.
+  int insert_segment(int node);
+  void remove_segment(int node);
+  /// Copies the branch at `node` onto the root node (a free site of it); returns the copy.
+  int duplicate_branch(int node);
+  /// Back to the training example's part graph.
+  void reset_graph();
+  /// One line per part: node, type, neighbours.
+  std::vector<std::string> describe_parts() const;
+  /// @}
+
+  /// \name Saving (the results as currently shown)
+  /// @{
+  void save_mesh(const std::string& path, bool arap_result = false) const;
+  void save_model(const std::string& path) const;
+  void save_handles(const std::string& path) const;
+  /// @}
+
+  /// Processes events until the solver has answered the latest request or
+  /// `timeout_ms` passed. Returns false on timeout.
+  bool wait_until_solved(int timeout_ms);
+
+Q_SIGNALS:
+  /// The connectivity or the colours changed (new model, new part graph).
+  void scene_changed();
+  /// A new solver frame arrived.
+  void positions_changed();
+
+private:
+  void adopt_model(CGAL::MPM::Morphable_part_model&& model, const QString& source);
+  void rebuild();
+  void set_scene(const CGAL::MPM::Indexed_mesh& rest, const CGAL::MPM::Part_graph& graph,
+                 std::vector<int> face_nodes);
+  void post(bool restart = false);
+  void on_frame(const Solve_frame& frame);
+  int root() const;
+
+  CGAL::MPM::Morphable_part_model model_;
+  bool has_model_ = false;
+  QString source_;
+  CGAL::MPM::Part_graph edit_graph_;  ///< the graph being edited (no vertices once edited)
+  bool graph_edited_ = false;
+  CGAL::MPM::Assembly assembly_;      ///< the embedded edited graph
+  CGAL::MPM::Indexed_mesh rest_;
+  std::vector<int> face_types_, face_nodes_;
+  std::vector<std::array<int, 2>> seam_edges_;
+  std::vector<int> docking_vertices_;
+  std::vector<int> handle_vertices_, handle_groups_;
+  Point_matrix handle_offsets_;       ///< target minus rest position, per handle
+  Edit_mode mode_ = Edit_mode::deform;
+  double caricature_factor_ = 1.5;
+  double symmetry_sigma_ = 0.01;
+  double coupling_ = 0.;
+  bool arap_ = false;
+  std::shared_ptr<const CGAL::MPM::Embedding_problem> problem_;
+  std::uint64_t serial_ = 0;
+  Solve_frame frame_;
+  Solver_thread thread_;
+};
+
+} // namespace mpm_demo
+
+#endif

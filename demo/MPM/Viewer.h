@@ -1,0 +1,81 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The 3D view: parts coloured by type, seams, docking sites and handles on
+// CGAL's QGLViewer; ray picking of vertices and parts with CGAL's AABB tree;
+// handles dragged in the screen plane; ARAP's result beside MPM's.
+#ifndef MPM_DEMO_VIEWER_H
+#define MPM_DEMO_VIEWER_H
+
+#include "Session.h"
+
+#include <CGAL/Qt/qglviewer.h>
+
+#include <QOpenGLBuffer>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+
+#include <memory>
+#include <vector>
+
+namespace mpm_demo {
+
+class Picking_tree;
+
+class Viewer : public CGAL::QGLViewer
+{
+  Q_OBJECT
+public:
+  explicit Viewer(Session& session, QWidget* parent = nullptr);
+  ~Viewer() override;
+
+  /// Looks at the scene from `azimuth` degrees around the up axis (y) and
+  /// `elevation` degrees above the horizontal, framing it whole.
+  void set_view(double azimuth, double elevation);
+  /// Frames the whole scene (both meshes when ARAP is shown).
+  void frame_scene();
+  int selected_part() const { return selected_part_; }
+  void select_part(int node);
+  bool show_seams = true;
+  bool show_docking_sites = true;
+
+Q_SIGNALS:
+  void part_selected(int node);
+  void message(const QString& text);
+
+protected:
+  void init() override;
+  void draw() override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  QString helpString() const override;
+
+private:
+  void on_scene_changed();
+  void on_positions_changed();
+  /// Vertex and face of the MPM mesh under a pixel; {-1, -1} when none.
+  std::pair<int, int> pick(const QPoint& pixel);
+  /// Handle whose target is drawn within a few pixels of `pixel`, or -1.
+  int handle_near(const QPoint& pixel) const;
+  /// World offset of the MPM mesh (left) and of the ARAP mesh (right).
+  CGAL::qglviewer::Vec split_offset() const;
+  bool split() const;
+  void upload(const Point_matrix& positions, const CGAL::qglviewer::Vec& offset, bool highlight);
+  void draw_points(const std::vector<float>& xyz, const QColor& color, float size);
+
+  Session& session_;
+  QOpenGLShaderProgram program_;
+  QOpenGLVertexArrayObject vao_;
+  QOpenGLBuffer buffers_[3]; // positions, normals, colours
+  bool gl_ready_ = false;
+  std::unique_ptr<Picking_tree> tree_;
+  bool tree_dirty_ = true;
+  int selected_part_ = -1;
+  int dragged_handle_ = -1;
+  double drag_depth_ = 0.;
+  CGAL::qglviewer::Vec drag_point_;
+};
+
+} // namespace mpm_demo
+
+#endif

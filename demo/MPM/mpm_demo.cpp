@@ -1,0 +1,484 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// mpm_demo: interactive editing with a morphable part model, and a batch
+// mode (`mpm_demo --batch SCRIPT`) that runs the same edits from a script
+// and writes screenshots, for tests and the manual's figures.
+#include "Main_window.h"
+
+#include <CGAL/Qt/init_ogl_context.h>
+
+#include <QApplication>
+#include <QImage>
+#include <QSet>
+#include <QStatusBar>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mpm_demo {
+
+namespace {
+
+const char* const usage_text =
+  "usage: mpm_demo [--synth FAMILY] [--vertices N] [--seed N]\n"
+  "                [--model FILE.mpm | --mesh MESH [--labels SEG|components] [--annotation A.json]]\n"
+  "                [--batch SCRIPT] [--size WxH] [--help]\n"
+  "Without a source it opens the synthetic hand. --batch runs SCRIPT (doc/MPM/Demo.md)\n"
+  "without interaction and exits: 0 when every command succeeded, 1 on the first\n"
+  "error (named by its line), 2 for a bad command line.\n";
+
+// Vertices of a synthetic model when not given: learning takes about a
+// second and dragging stays fluid on a laptop.
+constexpr int default_vertices = 3000;
+
+// The solver must answer a batch request within this time.
+constexpr int batch_timeout_ms = 120000;
+
+struct Script_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Image_stats
+{
+  int distinct_colors = 0;
+  double foreground = 0.; // fraction of pixels that differ from the corner pixel (the background)
+};
+
+Image_stats image_stats(const QImage& image)
+{
+  Image_stats s;
+  if(image.isNull() || image.width() == 0 || image.height() == 0) return s;
+  const QRgb background = image.pixel(0, 0);
+  QSet<QRgb> colors;
+  long long foreground = 0;
+  for(int y = 0; y < image.height(); ++y)
+    for(int x = 0; x < image.width(); ++x)
+    {
+      const QRgb c = image.pixel(x, y);
+      if(colors.size() < 100000) colors.insert(c);
+      foreground += c != background ? 1 : 0;
+    }
+  s.distinct_colors = colors.size();
+  s.foreground = double(foreground) / (double(image.width()) * image.height());
+  return s;
+}
+
+// A picture shows something when it has shading (many colours) and an
+// object covering a visible share of it.
+constexpr int min_distinct_colors = 32;
+constexpr double min_foreground = 0.02;
+// Two pictures differ when this share of their pixels does.
+constexpr double min_differing = 0.002;
+
+QImage read_image(const std::string& path)
+{
+  QImage image(QString::fromStdString(path));
+  if(image.isNull()) throw Script_error("cannot read the image '" + path + "'");
+  return image.convertToFormat(QImage::Format_RGB32);
+}
+
+void check_not_blank(const QImage& image, const std::string& name)
+{
+  const Image_stats s = image_stats(image);
+  if(s.distinct_colors < min_distinct_colors || s.foreground < min_foreground)
+    throw Script_error("the image '" + name + "' looks blank: " + std::to_string(s.distinct_colors) +
+                       " distinct colours, " + std::to_string(int(100. * s.foreground)) + "% non-background pixels");
+}
+
+class Batch_runner
+{
+public:
+  Batch_runner(Session& session, Main_window& window, const std::string& script)
+    : session_(session), window_(window), script_(script)
+  {}
+
+  int run()
+  {
+    std::ifstream in(script_);
+    if(!in)
+    {
+      std::cerr << "mpm_demo: cannot read the script '" << script_ << "'\n";
+      return 1;
+    }
+    std::string line;
+    int number = 0;
+    while(std::getline(in, line))
+    {
+      ++number;
+      std::istringstream words(line);
+      std::vector<std::string> w;
+      for(std::string word; words >> word;)
+      {
+        if(word[0] == '#') break;
+        w.push_back(word);
+      }
+      if(w.empty()) continue;
+      try
+      {
+        execute(w);
+      }
+      catch(const std::exception& e)
+      {
+        std::cerr << script_ << ":" << number << ": " << w[0] << ": " << e.what() << "\n";
+        return 1;
+      }
+    }
+    return 0;
+  }
+
+private:
+  static void arity(const std::vector<std::string>& w, std::size_t lo, std::size_t hi, const char* form)
+  {
+    if(w.size() < lo + 1 || w.size() > hi + 1) throw Script_error(std::string("expected '") + form + "'");
+  }
+
+  static double number(const std::string& s)
+  {
+    std::size_t end = 0;
+    double v = 0.;
+    try
+    {
+      v = std::stod(s, &end);
+    }
+    catch(const std::exception&)
+    {
+      end = 0;
+    }
+    if(end != s.size() || !std::isfinite(v)) throw Script_error("'" + s + "' is not a number");
+    return v;
+  }
+
+  static int integer(const std::string& s)
+  {
+    const double v = number(s);
+    if(v != std::floor(v) || std::abs(v) > 1e9) throw Script_error("'" + s + "' is not an integer");
+    return int(v);
+  }
+
+  // Waits for the solver's answer to everything posted so far.
+  void settle()
+  {
+    if(!session_.wait_until_solved(batch_timeout_ms)) throw Script_error("the solver did not answer in time");
+    const Solve_frame& f = session_.last_frame();
+    if(!f.error.isEmpty()) throw Script_error("the solver failed: " + f.error.toStdString());
+    window_.viewer().update();
+    QApplication::processEvents();
+  }
+
+  void report()
+  {
+    settle();
+    std::cout << "  " << window_.solver_status().toStdString() << "\n";
+  }
+
+  void execute(const std::vector<std::string>& w)
+  {
+    const std::string& c = w[0];
+    std::cout << "> ";
+    for(const std::string& s : w) std::cout << s << " ";
+    std::cout << "\n";
+    if(c == "synth")
+    {
+      arity(w, 1, 3, "synth FAMILY [VERTICES [SEED]]");
+      session_.load_synthetic(w[1], w.size() > 2 ? integer(w[2]) : default_vertices, w.size() > 3 ? unsigned(integer(w[3])) : 1u);
+      report();
+    }
+    else if(c == "load")
+    {
+      arity(w, 2, 3, "load MESH LABELS [ANNOTATION]");
+      session_.load_labeled_mesh(w[1], w[2], w.size() > 3 ? w[3] : "");
+      report();
+    }
+    else if(c == "model")
+    {
+      arity(w, 1, 1, "model FILE.mpm");
+      session_.load_model(w[1]);
+      report();
+    }
+    else if(c == "handles")
+    {
+      arity(w, 1, 2, "handles per-part N | handles farthest N | handles clear");
+      if(w[1] == "per-part" && w.size() == 3) session_.set_handles_per_part(integer(w[2]));
+      else if(w[1] == "farthest" && w.size() == 3) session_.set_handles_farthest(integer(w[2]));
+      else if(w[1] == "clear" && w.size() == 2) session_.clear_handles();
+      else throw Script_error("expected 'handles per-part N', 'handles farthest N' or 'handles clear'");
+      std::cout << "  " << session_.handle_vertices().size() << " handles\n";
+    }
+    else if(c == "handle")
+    {
+      arity(w, 2, 2, "handle add VERTEX | handle remove HANDLE");
+      if(w[1] == "add") session_.add_handle(integer(w[2]));
+      else if(w[1] == "remove") session_.remove_handle(integer(w[2]));
+      else throw Script_error("expected 'handle add VERTEX' or 'handle remove HANDLE'");
+    }
+    else if(c == "group")
+    {
+      if(w.size() < 3) throw Script_error("expected 'group HANDLE HANDLE...'");
+      std::vector<int> handles;
+      for(std::size_t i = 1; i < w.size(); ++i) handles.push_back(integer(w[i]));
+      session_.group_handles(handles);
+    }
+    else if(c == "drag")
+    {
+      arity(w, 4, 4, "drag HANDLE DX DY DZ");
+      const Point_matrix& p = session_.rest().points;
+      const double diagonal = p.rows() ? (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm() : 0.;
+      session_.drag_handle(integer(w[1]), diagonal * Eigen::RowVector3d(number(w[2]), number(w[3]), number(w[4])));
+      report();
+    }
+    else if(c == "deform" || c == "symmetrize" || c == "caricature")
+    {
+      if(c == "deform")
+      {
+        arity(w, 0, 0, "deform");
+        session_.set_mode(Edit_mode::deform);
+      }
+      else if(c == "symmetrize")
+      {
+        arity(w, 0, 1, "symmetrize [RELATIVE-SIGMA]");
+        session_.set_symmetry_sigma(w.size() > 1 ? number(w[1]) : session_.symmetry_sigma());
+      }
+      else
+      {
+        arity(w, 1, 1, "caricature FACTOR");
+        session_.set_caricature_factor(number(w[1]));
+      }
+      report();
+    }
+    else if(c == "coupling")
+    {
+      arity(w, 1, 1, "coupling WEIGHT");
+      session_.set_coupling(number(w[1]));
+      report();
+    }
+    else if(c == "arap")
+    {
+      arity(w, 1, 1, "arap on|off");
+      if(w[1] != "on" && w[1] != "off") throw Script_error("expected 'arap on' or 'arap off'");
+      session_.set_arap(w[1] == "on");
+      report();
+      window_.viewer().frame_scene();
+    }
+    else if(c == "reset")
+    {
+      arity(w, 0, 0, "reset");
+      session_.reset();
+      report();
+    }
+    else if(c == "insert" || c == "remove" || c == "duplicate")
+    {
+      arity(w, 1, 1, "insert|remove|duplicate PART");
+      const int part = integer(w[1]);
+      if(c == "insert") std::cout << "  new part " << session_.insert_segment(part) << "\n";
+      else if(c == "remove") session_.remove_segment(part);
+      else std::cout << "  copy at part " << session_.duplicate_branch(part) << "\n";
+      report();
+    }
+    else if(c == "reset-graph")
+    {
+      arity(w, 0, 0, "reset-graph");
+      session_.reset_graph();
+      report();
+    }
+    else if(c == "parts")
+    {
+      arity(w, 0, 0, "parts");
+      for(const std::string& line : session_.describe_parts()) std::cout << "  " << line << "\n";
+    }
+    else if(c == "select")
+    {
+      arity(w, 1, 1, "select PART");
+      window_.viewer().select_part(integer(w[1]));
+    }
+    else if(c == "view")
+    {
+      arity(w, 2, 2, "view AZIMUTH ELEVATION");
+      window_.viewer().set_view(number(w[1]), number(w[2]));
+    }
+    else if(c == "size")
+    {
+      arity(w, 2, 2, "size WIDTH HEIGHT");
+      const int width = integer(w[1]), height = integer(w[2]);
+      if(width < 64 || height < 64 || width > 4096 || height > 4096)
+        throw Script_error("the size must be between 64 and 4096 pixels");
+      window_.viewer().setFixedSize(width, height);
+      window_.adjustSize();
+      QApplication::processEvents();
+    }
+    else if(c == "seams" || c == "sites")
+    {
+      arity(w, 1, 1, "seams|sites on|off");
+      (c == "seams" ? window_.viewer().show_seams : window_.viewer().show_docking_sites) = w[1] == "on";
+    }
+    else if(c == "wait")
+    {
+      arity(w, 0, 0, "wait");
+      report();
+    }
+    else if(c == "screenshot")
+    {
+      arity(w, 1, 1, "screenshot FILE.png");
+      settle();
+      const QImage image = window_.viewer().grabFramebuffer();
+      if(image.isNull() || !image.save(QString::fromStdString(w[1])))
+        throw Script_error("cannot write the screenshot '" + w[1] + "'");
+      const Image_stats s = image_stats(image.convertToFormat(QImage::Format_RGB32));
+      std::cout << "  wrote " << w[1] << " (" << image.width() << "x" << image.height() << ", "
+                << s.distinct_colors << " colours, " << int(100. * s.foreground + 0.5) << "% foreground)\n";
+    }
+    else if(c == "save-mesh")
+    {
+      arity(w, 1, 2, "save-mesh FILE [arap]");
+      if(w.size() == 3 && w[2] != "arap") throw Script_error("expected 'save-mesh FILE [arap]'");
+      settle();
+      session_.save_mesh(w[1], w.size() == 3);
+    }
+    else if(c == "save-model")
+    {
+      arity(w, 1, 1, "save-model FILE");
+      session_.save_model(w[1]);
+    }
+    else if(c == "save-handles")
+    {
+      arity(w, 1, 1, "save-handles FILE");
+      session_.save_handles(w[1]);
+    }
+    else if(c == "check-image")
+    {
+      arity(w, 1, 1, "check-image FILE.png");
+      check_not_blank(read_image(w[1]), w[1]);
+      std::cout << "  not blank\n";
+    }
+    else if(c == "compare-images")
+    {
+      arity(w, 2, 2, "compare-images A.png B.png");
+      const QImage a = read_image(w[1]), b = read_image(w[2]);
+      check_not_blank(a, w[1]);
+      check_not_blank(b, w[2]);
+      double differing = 1.;
+      if(a.size() == b.size())
+      {
+        long long count = 0;
+        for(int y = 0; y < a.height(); ++y)
+          for(int x = 0; x < a.width(); ++x) count += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+        differing = double(count) / (double(a.width()) * a.height());
+      }
+      if(differing < min_differing)
+        throw Script_error("'" + w[1] + "' and '" + w[2] + "' are the same picture (" +
+                           std::to_string(100. * differing) + "% of the pixels differ)");
+      std::cout << "  " << 100. * differing << "% of the pixels differ\n";
+    }
+    else if(c == "echo")
+    {
+      for(std::size_t i = 1; i < w.size(); ++i) std::cout << (i > 1 ? " " : "  ") << w[i];
+      std::cout << "\n";
+    }
+    else
+      throw Script_error("unknown command '" + c + "' (see doc/MPM/Demo.md for the list)");
+  }
+
+  Session& session_;
+  Main_window& window_;
+  std::string script_;
+};
+
+} // namespace
+
+} // namespace mpm_demo
+
+int main(int argc, char** argv)
+{
+  using namespace mpm_demo;
+  CGAL::Qt::init_ogl_context(4, 3);
+  QApplication app(argc, argv);
+  app.setApplicationName("mpm_demo");
+
+  std::string batch, family = "hand", model, mesh, labels = "components", annotation;
+  int vertices = default_vertices, width = 0, height = 0;
+  unsigned seed = 1;
+  const QStringList args = app.arguments();
+  try
+  {
+    for(int i = 1; i < args.size(); ++i)
+    {
+      const std::string a = args[i].toStdString();
+      const auto value = [&]() -> std::string {
+        if(i + 1 >= args.size()) throw std::invalid_argument("option " + a + " needs a value");
+        return args[++i].toStdString();
+      };
+      if(a == "--help" || a == "-h")
+      {
+        std::cout << usage_text;
+        return 0;
+      }
+      else if(a == "--batch") batch = value();
+      else if(a == "--synth") family = value();
+      else if(a == "--vertices") vertices = std::stoi(value());
+      else if(a == "--seed") seed = unsigned(std::stoul(value()));
+      else if(a == "--model") model = value();
+      else if(a == "--mesh") mesh = value();
+      else if(a == "--labels") labels = value();
+      else if(a == "--annotation") annotation = value();
+      else if(a == "--size")
+      {
+        const std::string s = value();
+        const std::size_t x = s.find('x');
+        if(x == std::string::npos) throw std::invalid_argument("--size takes WIDTHxHEIGHT");
+        width = std::stoi(s.substr(0, x));
+        height = std::stoi(s.substr(x + 1));
+      }
+      else throw std::invalid_argument("unknown option '" + a + "'");
+    }
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "mpm_demo: " << e.what() << "\n" << usage_text;
+    return 2;
+  }
+
+  Session session;
+  Main_window window(session);
+  if(batch.empty() && width == 0) window.resize(1280, 800);
+  if(!batch.empty() && width == 0)
+  {
+    width = 640;
+    height = 480;
+  }
+  if(width > 0) window.viewer().setFixedSize(width, height);
+  window.show();
+  QApplication::processEvents();
+
+  // A batch script loads its own model; otherwise start with something to drag.
+  try
+  {
+    if(!model.empty()) session.load_model(model);
+    else if(!mesh.empty()) session.load_labeled_mesh(mesh, labels, annotation);
+    else if(batch.empty()) session.load_synthetic(family, vertices, seed);
+  }
+  catch(const std::exception& e)
+  {
+    if(!batch.empty())
+    {
+      std::cerr << "mpm_demo: " << e.what() << "\n";
+      return 1;
+    }
+    window.statusBar()->showMessage(QString("Error: ") + e.what());
+  }
+
+  if(!batch.empty())
+  {
+    Batch_runner runner(session, window, batch);
+    return runner.run();
+  }
+  window.viewer().set_view(0., 20.);
+  window.statusBar()->showMessage("Shift+click a vertex to add a handle, Ctrl+drag a handle (black dot) to deform; "
+                                  "Alt+click a part to edit the part graph. Left drag rotates.");
+  return app.exec();
+}

@@ -1,0 +1,54 @@
+#!/bin/sh
+# Copyright (c) 2026 CGAL-MPM contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Runs the Qt demo under a virtual X server in batch mode: a scripted drag, a
+# symmetrize and a segment insertion on a small synthetic hand, screenshots
+# after each, checked (by the demo's own check-image and compare-images
+# commands) to be not blank and to differ from one another. Then checks that
+# a script error fails with the script's line named.
+#
+# usage: demo_batch_test.sh MPM_DEMO OUTPUT_DIRECTORY
+set -eu
+demo=$1
+out=$2
+mkdir -p "$out"
+rm -f "$out"/*.png
+run() {
+  xvfb-run -a -s "-screen 0 1024x768x24" "$demo" --batch "$1"
+}
+
+cat > "$out/edit.txt" <<SCRIPT
+# small pictures keep the checks fast
+size 320 240
+synth hand 1500
+parts
+view 0 30
+screenshot $out/rest.png
+handles per-part 1
+drag 0 0.15 0.1 0.05
+screenshot $out/drag.png
+symmetrize 0.01
+screenshot $out/symmetrize.png
+deform
+insert 3
+screenshot $out/insert.png
+check-image $out/rest.png
+compare-images $out/rest.png $out/drag.png
+compare-images $out/drag.png $out/symmetrize.png
+compare-images $out/symmetrize.png $out/insert.png
+compare-images $out/rest.png $out/insert.png
+SCRIPT
+run "$out/edit.txt"
+
+printf 'size 128 128\nsynth hand 1500\nfrobnicate 1 2\n' > "$out/bad.txt"
+if run "$out/bad.txt" 2> "$out/bad.err"; then
+  echo "FAIL: an unknown command did not make the batch fail" >&2
+  exit 1
+fi
+if ! grep -q "bad.txt:3: frobnicate: unknown command" "$out/bad.err"; then
+  echo "FAIL: the error does not name the line:" >&2
+  cat "$out/bad.err" >&2
+  exit 1
+fi
+echo "demo batch test passed"
