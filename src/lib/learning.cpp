@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/Dense_correspondence.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
@@ -107,6 +108,40 @@ double automatic_sigma_sub(const Morphable_part_model& model, const Training_inp
 }
 
 // Local numbering by first appearance in the part's faces (the known
+// correspondence convention): the mesh vertex of each local vertex and the
+// local triangles. `local_of` is scratch space of the mesh's size, all -1.
+void local_part(const Indexed_mesh& mesh, const std::vector<int>& faces, std::vector<int>& local_of,
+                std::vector<int>& vertices, std::vector<Triangle>& triangles)
+{
+  vertices.clear();
+  triangles.clear();
+  triangles.reserve(faces.size());
+  for(int f : faces)
+  {
+    Triangle t;
+    for(int k = 0; k < 3; ++k)
+    {
+      const int v = mesh.triangles[f][k];
+      if(local_of[v] < 0)
+      {
+        local_of[v] = static_cast<int>(vertices.size());
+        vertices.push_back(v);
+      }
+      t[k] = local_of[v];
+    }
+    triangles.push_back(t);
+  }
+  for(int v : vertices) local_of[v] = -1;
+}
+
+std::map<int, std::vector<int>> faces_by_label(const Labeled_mesh& lm)
+{
+  std::map<int, std::vector<int>> faces_of_label;
+  for(int f = 0; f < lm.mesh.number_of_faces(); ++f) faces_of_label[lm.face_labels[f]].push_back(f);
+  return faces_of_label;
+}
+
+// Local numbering by first appearance in the part's faces (the known
 // correspondence convention), local triangles, and the part's type.
 void extract_parts(const std::vector<Training_input>& inputs, Morphable_part_model& model,
                    std::vector<Part_instance>& parts, std::vector<std::vector<int>>& instances_of_type)
@@ -116,8 +151,7 @@ void extract_parts(const std::vector<Training_input>& inputs, Morphable_part_mod
     const Labeled_mesh& lm = inputs[e].mesh;
     const Annotation& annotation = inputs[e].annotation;
     const std::string annotation_source = annotation.source.empty() ? lm.source + " annotation" : annotation.source;
-    std::map<int, std::vector<int>> faces_of_label;
-    for(int f = 0; f < lm.mesh.number_of_faces(); ++f) faces_of_label[lm.face_labels[f]].push_back(f);
+    const std::map<int, std::vector<int>> faces_of_label = faces_by_label(lm);
 
     if(!annotation.part_type_of_label.empty())
     {
@@ -138,23 +172,7 @@ void extract_parts(const std::vector<Training_input>& inputs, Morphable_part_mod
       part.example = static_cast<int>(e);
       part.label = label;
       std::vector<Triangle> triangles;
-      triangles.reserve(faces.size());
-      for(int f : faces)
-      {
-        Triangle t;
-        for(int k = 0; k < 3; ++k)
-        {
-          const int v = lm.mesh.triangles[f][k];
-          if(local_of[v] < 0)
-          {
-            local_of[v] = static_cast<int>(part.vertices.size());
-            part.vertices.push_back(v);
-          }
-          t[k] = local_of[v];
-        }
-        triangles.push_back(t);
-      }
-      for(int v : part.vertices) local_of[v] = -1;
+      local_part(lm.mesh, faces, local_of, part.vertices, triangles);
 
       int type = -1;
       if(!annotation.part_type_of_label.empty())
@@ -439,10 +457,8 @@ void add_virtual_edges(const Point_matrix& from, const std::vector<int>& from_po
   }
 }
 
-} // namespace
-
-Morphable_part_model learn_morphable_part_model(const std::vector<Training_input>& inputs,
-                                                const Learning_options& options)
+// The learner proper, on inputs whose same-type parts share connectivity.
+Morphable_part_model learn_corresponded(const std::vector<Training_input>& inputs, const Learning_options& options)
 {
   const auto progress = [&](const std::string& stage, double fraction) {
     if(options.progress) options.progress(stage, fraction);
@@ -450,8 +466,6 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
   const auto warn = [&](const std::string& w) {
     if(options.warning) options.warning(w);
   };
-  if(inputs.empty()) throw Input_error("", "", "no training mesh given");
-  for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
 
   Morphable_part_model model;
   model.parameters = resolve_parameters(inputs.front());
@@ -701,6 +715,178 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
   }
   progress("done", 1.);
   return model;
+}
+
+} // namespace
+
+Corresponded_training correspond_training_inputs(const std::vector<Training_input>& inputs,
+                                                 const Learning_options& options, bool all_types)
+{
+  Corresponded_training result;
+  result.inputs = inputs;
+  // Segments of each annotated type, and the type index that tags seams.
+  struct Segment_ref
+  {
+    int example, label;
+    std::vector<int> vertices;
+    std::vector<Triangle> triangles;
+  };
+  std::map<std::string, std::vector<Segment_ref>> segments_of_type;
+  std::map<std::string, int> tag_of_type;
+  std::vector<std::map<int, std::vector<int>>> faces(inputs.size());
+  for(std::size_t e = 0; e < inputs.size(); ++e)
+  {
+    const Training_input& input = inputs[e];
+    faces[e] = faces_by_label(input.mesh);
+    std::vector<int> local_of(input.mesh.mesh.number_of_vertices(), -1);
+    for(const auto& [label, part_faces] : faces[e])
+    {
+      const auto type = input.annotation.part_type_of_label.find(label);
+      if(type == input.annotation.part_type_of_label.end()) continue;
+      tag_of_type.insert({type->second, static_cast<int>(tag_of_type.size())});
+      Segment_ref r{static_cast<int>(e), label, {}, {}};
+      local_part(input.mesh.mesh, part_faces, local_of, r.vertices, r.triangles);
+      segments_of_type[type->second].push_back(std::move(r));
+    }
+  }
+
+  // Per input: new vertex block of each corresponded label, and its landmarks.
+  std::vector<std::map<int, Point_matrix>> replaced(inputs.size());
+  std::vector<std::map<int, std::vector<int>>> replaced_landmarks(inputs.size());
+  std::vector<std::map<int, const std::vector<Triangle>*>> replaced_triangles(inputs.size());
+  int type_index = 0;
+  for(const auto& [name, refs] : segments_of_type)
+  {
+    ++type_index;
+    bool differ = false;
+    for(const Segment_ref& r : refs) differ = differ || r.triangles != refs.front().triangles;
+    if(refs.size() < 2 || !(differ || all_types)) continue;
+    if(options.progress) options.progress("correspondence of " + name, double(type_index - 1) / segments_of_type.size());
+    std::vector<Correspondence_segment> segments;
+    for(const Segment_ref& r : refs)
+    {
+      const Training_input& input = inputs[r.example];
+      const Indexed_mesh& mesh = input.mesh.mesh;
+      Correspondence_segment c;
+      c.name = input.mesh.source + " label " + std::to_string(r.label);
+      c.mesh.points.resize(r.vertices.size(), 3);
+      std::unordered_map<int, int> local;
+      for(std::size_t k = 0; k < r.vertices.size(); ++k)
+      {
+        c.mesh.points.row(k) = mesh.points.row(r.vertices[k]);
+        local[r.vertices[k]] = static_cast<int>(k);
+      }
+      c.mesh.triangles = r.triangles;
+      const auto landmarks = input.annotation.landmarks_of_label.find(r.label);
+      if(landmarks != input.annotation.landmarks_of_label.end())
+        for(std::size_t k = 0; k < landmarks->second.size(); ++k)
+        {
+          const auto it = local.find(landmarks->second[k]);
+          if(it == local.end())
+            throw Input_error(input.annotation.source.empty() ? input.mesh.source + " annotation" : input.annotation.source,
+                              label_element(r.label, name) + ": landmark " + std::to_string(k),
+                              "vertex " + std::to_string(landmarks->second[k]) + " is not a vertex of this part");
+          c.landmarks.push_back(it->second);
+        }
+      // Seam tags: the type of the part across each seam vertex.
+      c.seam_tags.assign(r.vertices.size(), -1);
+      for(int f = 0; f < mesh.number_of_faces(); ++f)
+      {
+        const int other = input.mesh.face_labels[f];
+        if(other == r.label) continue;
+        const auto other_type = input.annotation.part_type_of_label.find(other);
+        for(int v : mesh.triangles[f])
+        {
+          const auto it = local.find(v);
+          if(it != local.end())
+            c.seam_tags[it->second] =
+              other_type == input.annotation.part_type_of_label.end() ? -1 : tag_of_type.at(other_type->second);
+        }
+      }
+      segments.push_back(std::move(c));
+    }
+    Dense_correspondence_options co = options.correspondence;
+    if(options.progress && !co.progress)
+      co.progress = [&](const std::string& stage, double) { options.progress(stage, double(type_index - 1) / segments_of_type.size()); };
+    Dense_correspondence& c = result.types[name] = compute_dense_correspondence(segments, name, co);
+    for(std::size_t i = 0; i < refs.size(); ++i)
+    {
+      replaced[refs[i].example][refs[i].label] = c.segments[i].positions;
+      replaced_triangles[refs[i].example][refs[i].label] = &c.triangles;
+      // Landmark k of every segment is the template's landmark vertex k.
+      replaced_landmarks[refs[i].example][refs[i].label] = segments.front().landmarks;
+      result.segments[name].push_back({refs[i].example, refs[i].label});
+    }
+  }
+
+  for(std::size_t e = 0; e < inputs.size(); ++e)
+  {
+    if(replaced[e].empty()) continue;
+    const Labeled_mesh& lm = inputs[e].mesh;
+    Labeled_mesh rebuilt;
+    rebuilt.source = lm.source;
+    std::vector<int> new_of(lm.mesh.number_of_vertices(), -1);
+    std::vector<Eigen::RowVector3d> points;
+    std::map<int, int> block_of_label;
+    for(const auto& [label, part_faces] : faces[e])
+    {
+      const auto it = replaced[e].find(label);
+      if(it != replaced[e].end())
+      {
+        block_of_label[label] = static_cast<int>(points.size());
+        for(Eigen::Index v = 0; v < it->second.rows(); ++v) points.push_back(it->second.row(v));
+        for(const Triangle& t : *replaced_triangles[e].at(label))
+        {
+          const int b = block_of_label[label];
+          rebuilt.mesh.triangles.push_back({t[0] + b, t[1] + b, t[2] + b});
+          rebuilt.face_labels.push_back(label);
+        }
+        continue;
+      }
+      for(int f : part_faces)
+      {
+        Triangle t;
+        for(int k = 0; k < 3; ++k)
+        {
+          int& v = new_of[lm.mesh.triangles[f][k]];
+          if(v < 0)
+          {
+            v = static_cast<int>(points.size());
+            points.push_back(lm.mesh.points.row(lm.mesh.triangles[f][k]));
+          }
+          t[k] = v;
+        }
+        rebuilt.mesh.triangles.push_back(t);
+        rebuilt.face_labels.push_back(label);
+      }
+    }
+    rebuilt.mesh.points.resize(points.size(), 3);
+    for(std::size_t v = 0; v < points.size(); ++v) rebuilt.mesh.points.row(v) = points[v];
+    Annotation& annotation = result.inputs[e].annotation;
+    for(auto& [label, landmarks] : annotation.landmarks_of_label)
+    {
+      const auto block = block_of_label.find(label);
+      if(block != block_of_label.end())
+      {
+        landmarks = replaced_landmarks[e].at(label);
+        for(int& v : landmarks) v += block->second;
+      }
+      else
+        for(int& v : landmarks)
+          if(v >= 0 && v < int(new_of.size())) v = new_of[v];
+    }
+    result.inputs[e].mesh = std::move(rebuilt);
+  }
+  return result;
+}
+
+Morphable_part_model learn_morphable_part_model(const std::vector<Training_input>& inputs,
+                                                const Learning_options& options)
+{
+  if(inputs.empty()) throw Input_error("", "", "no training mesh given");
+  for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
+  const Corresponded_training corresponded = correspond_training_inputs(inputs, options);
+  return learn_corresponded(corresponded.types.empty() ? inputs : corresponded.inputs, options);
 }
 
 Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const Annotation& annotation,

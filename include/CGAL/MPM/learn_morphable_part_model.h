@@ -3,12 +3,14 @@
 #ifndef CGAL_MPM_LEARN_MORPHABLE_PART_MODEL_H
 #define CGAL_MPM_LEARN_MORPHABLE_PART_MODEL_H
 
+#include <CGAL/MPM/Dense_correspondence.h>
 #include <CGAL/MPM/Face_graph_conversion.h>
 #include <CGAL/MPM/Indexed_mesh.h>
 #include <CGAL/MPM/Model_parameters.h>
 #include <CGAL/MPM/Morphable_part_model.h>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,13 +33,46 @@ struct Learning_options
   std::function<void(const std::string& stage, double fraction)> progress;
   /// Called with one line per warning (for example an isolated part).
   std::function<void(const std::string& warning)> warning;
+  /// Options of the dense correspondence run for part types whose
+  /// instances have different triangulations.
+  Dense_correspondence_options correspondence;
 };
 
 /// \ingroup PkgMPMRef
-/// Learns a morphable part model from one or more labelled meshes whose
-/// same-type parts share connectivity (known correspondence: within each
-/// part, vertices are numbered by first appearance in its faces, in face
-/// order). Finds boundary dockings (shared seam edges) and generalized
+/// Training inputs whose same-type parts were given one connectivity.
+struct Corresponded_training
+{
+  /// The inputs rebuilt: every corresponded part has its type's template
+  /// connectivity (its own vertices, no longer shared with its neighbours),
+  /// other parts are unchanged; landmarks are renumbered.
+  std::vector<Training_input> inputs;
+  /// Per corresponded type: the correspondence of its segments.
+  std::map<std::string, Dense_correspondence> types;
+  /// Per corresponded type: (input, label) of each segment, in the order of
+  /// `Dense_correspondence::segments`.
+  std::map<std::string, std::vector<std::pair<int, int>>> segments;
+};
+
+/// \ingroup PkgMPMRef
+/// Runs `compute_dense_correspondence()` on every annotated part type whose
+/// instances do not share connectivity (or, with `all_types`, on every type
+/// with at least two instances) and rebuilds the inputs with the template
+/// connectivity. Seams tag the boundary loops with the neighbouring part's
+/// type, and annotation landmarks take priority over automatic ones.
+/// Throws `Input_error` as `learn_morphable_part_model()` and
+/// `compute_dense_correspondence()` do.
+Corresponded_training correspond_training_inputs(const std::vector<Training_input>& inputs,
+                                                 const Learning_options& options = Learning_options(),
+                                                 bool all_types = false);
+
+/// \ingroup PkgMPMRef
+/// Learns a morphable part model from one or more labelled meshes. Parts of
+/// one type that share connectivity are in known correspondence (within
+/// each part, vertices are numbered by first appearance in its faces, in
+/// face order); annotated types whose parts are triangulated differently are
+/// first put in dense correspondence (`correspond_training_inputs()`), and
+/// the model's examples are the rebuilt meshes, where those parts dock to
+/// their neighbours by generalized dockings. Finds boundary dockings (shared seam edges) and generalized
 /// dockings (parts of different connected components within the docking
 /// radius), learns a shape space per part type and per docking rule, and
 /// collects the grammar. Instances and rules are pooled across all inputs;
@@ -45,7 +80,8 @@ struct Learning_options
 ///
 /// Throws `Input_error` for invalid input (naming the mesh and element: a
 /// part type without instances, instances of one type with different
-/// connectivity, an empty part, bad geometry).
+/// connectivity without an annotation naming its type, an empty part, bad
+/// geometry, segments that cannot be put in correspondence).
 Morphable_part_model learn_morphable_part_model(const std::vector<Training_input>& inputs,
                                                 const Learning_options& options = Learning_options());
 

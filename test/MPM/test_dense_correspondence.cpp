@@ -1,0 +1,260 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Dense correspondence of same-type parts with different triangulations:
+// errors against the synthetic ground truth after independent remeshing,
+// learning from such parts, and bad input.
+#include <CGAL/MPM/Correspondence_evaluation.h>
+#include <CGAL/MPM/Dense_correspondence.h>
+#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <string>
+
+namespace {
+
+using namespace CGAL::MPM;
+
+const Synthetic_model& small_hand()
+{
+  static const Synthetic_model model = [] {
+    Synthetic_options o;
+    o.vertices = 3000;
+    return make_synthetic_model(Synthetic_family::hand, o);
+  }();
+  return model;
+}
+
+const std::vector<Correspondence_type_report>& hand_reports()
+{
+  static const std::vector<Correspondence_type_report> reports = evaluate_correspondence_on_remeshed(small_hand());
+  return reports;
+}
+
+// A tube: `rings` rings of `sides` vertices, open at both ends.
+Indexed_mesh tube(int rings, int sides, double length)
+{
+  Indexed_mesh m;
+  m.points.resize(rings * sides, 3);
+  const double pi = std::acos(-1.);
+  for(int r = 0; r < rings; ++r)
+    for(int s = 0; s < sides; ++s)
+      m.points.row(r * sides + s) << std::cos(2 * pi * s / sides), std::sin(2 * pi * s / sides), length * r / (rings - 1);
+  for(int r = 0; r + 1 < rings; ++r)
+    for(int s = 0; s < sides; ++s)
+    {
+      const int a = r * sides + s, b = r * sides + (s + 1) % sides, c = a + sides, d = b + sides;
+      m.triangles.push_back({a, b, d});
+      m.triangles.push_back({a, d, c});
+    }
+  return m;
+}
+
+// A tube closed at the top by a fan: one boundary loop.
+Indexed_mesh capped_tube(int rings, int sides, double length)
+{
+  Indexed_mesh m = tube(rings, sides, length);
+  const int apex = m.number_of_vertices();
+  m.points.conservativeResize(apex + 1, 3);
+  m.points.row(apex) << 0., 0., length * 1.2;
+  const int top = (rings - 1) * sides;
+  for(int s = 0; s < sides; ++s) m.triangles.push_back({top + s, top + (s + 1) % sides, apex});
+  return m;
+}
+
+TEST(Dense_correspondence, remeshed_parts_share_no_connectivity)
+{
+  const Labeled_mesh remeshed = remesh_parts_independently(small_hand());
+  std::map<int, std::size_t> faces_of_label;
+  for(int label : remeshed.face_labels) ++faces_of_label[label];
+  for(const Synthetic_type& type : small_hand().types)
+  {
+    std::set<std::size_t> counts;
+    int instances = 0;
+    for(const Synthetic_instance& i : small_hand().instances)
+      if(i.type == type.name)
+      {
+        counts.insert(faces_of_label.at(i.label));
+        ++instances;
+      }
+    // Different face counts prove different connectivity; a coincidence
+    // of counts would only weaken the test, not fake a result.
+    EXPECT_GE(counts.size() + 1, static_cast<std::size_t>(instances)) << type.name;
+  }
+}
+
+TEST(Dense_correspondence, proximal_phalanges_meet_the_ground_truth_targets)
+{
+  // Proximal phalanges (two seams) with automatic landmarks only: mean
+  // <= 1% and 95th percentile <= 3% of the part's diameter, before and
+  // after refinement.
+  bool found = false;
+  for(const Correspondence_type_report& r : hand_reports())
+  {
+    if(r.type != "proximal") continue;
+    found = true;
+    EXPECT_EQ(r.segments, 5);
+    EXPECT_LE(r.mean_before, 0.01);
+    EXPECT_LE(r.p95_before, 0.03);
+    EXPECT_LE(r.mean_after, 0.01);
+    EXPECT_LE(r.p95_after, 0.03);
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(Dense_correspondence, refinement_lowers_the_trace_of_every_type)
+{
+  ASSERT_EQ(hand_reports().size(), 3u);
+  for(const Correspondence_type_report& r : hand_reports())
+  {
+    EXPECT_LT(r.after.trace, r.before.trace) << r.type;
+    EXPECT_LT(r.after.total(10., 10.), r.before.total(10., 10.)) << r.type;
+    // Middle and distal phalanges are near-symmetric tubes whose twist the
+    // geometry barely fixes (see doc/MPM/Correspondence.md): looser bounds.
+    EXPECT_LT(r.mean_after, 0.05) << r.type;
+  }
+}
+
+TEST(Dense_correspondence, template_connectivity_on_every_segment)
+{
+  std::vector<Correspondence_segment> segments(3);
+  segments[0].mesh = tube(6, 12, 3.);
+  segments[1].mesh = tube(9, 16, 3.6);
+  segments[2].mesh = tube(5, 10, 2.5);
+  for(std::size_t i = 0; i < segments.size(); ++i) segments[i].name = "tube " + std::to_string(i);
+  const Dense_correspondence c = compute_dense_correspondence(segments, "tube");
+  EXPECT_EQ(c.triangles, segments[0].mesh.triangles);
+  ASSERT_EQ(c.segments.size(), 3u);
+  for(std::size_t i = 0; i < 3; ++i)
+  {
+    const Point_matrix& p = c.segments[i].positions;
+    ASSERT_EQ(p.rows(), segments[0].mesh.number_of_vertices());
+    ASSERT_TRUE(p.allFinite());
+    // On the cylinder of radius 1 (up to the chord error of the segment's
+    // own polygonal sides) and within its length.
+    const double length = segments[i].mesh.points.col(2).maxCoeff();
+    for(Eigen::Index v = 0; v < p.rows(); ++v)
+    {
+      EXPECT_NEAR(p.row(v).head<2>().norm(), 1., 0.1) << i << " " << v;
+      EXPECT_GE(p(v, 2), -1e-9);
+      EXPECT_LE(p(v, 2), length + 1e-9);
+    }
+    EXPECT_LT(c.segments[i].residual, 0.05);
+  }
+  EXPECT_LE(c.after.trace, c.before.trace);
+}
+
+TEST(Dense_correspondence, learns_and_deforms_remeshed_parts)
+{
+  const Labeled_mesh remeshed = remesh_parts_independently(small_hand());
+  std::vector<std::string> stages;
+  Learning_options options;
+  options.progress = [&](const std::string& stage, double) { stages.push_back(stage); };
+  const Morphable_part_model model = learn_morphable_part_model(remeshed, small_hand().annotation, options);
+  EXPECT_NE(std::find(stages.begin(), stages.end(), "correspondence of proximal"), stages.end());
+  ASSERT_EQ(model.types.size(), 4u);
+  for(const Part_type& t : model.types)
+    if(t.name != "palm") EXPECT_GT(t.space.number_of_modes(), 0) << t.name;
+  EXPECT_FALSE(model.rules.empty());
+
+  const Indexed_mesh& rest = model.examples[0].mesh;
+  Labeled_mesh example;
+  example.mesh = rest;
+  example.face_labels = model.examples[0].face_labels;
+  Point_matrix stretched = rest.points;
+  stretched.col(1) *= 1.1;
+  const Handle_set handles = handles_per_part(example, 1, stretched);
+  Embedding_solver solver(make_deformation_problem(model));
+  solver.set_handles(handles.vertices, handles.targets);
+  solver.solve();
+  const Point_matrix& result = solver.positions();
+  ASSERT_TRUE(result.allFinite());
+  // Every handle reached, and no vertex thrown far off.
+  for(int h = 0; h < handles.size(); ++h)
+    EXPECT_LT((result.row(handles.vertices[h]) - handles.targets.row(h)).norm(), 0.05 * (rest.points.colwise().maxCoeff() - rest.points.colwise().minCoeff()).norm());
+  EXPECT_LT((result - stretched).rowwise().norm().maxCoeff(),
+            0.3 * (rest.points.colwise().maxCoeff() - rest.points.colwise().minCoeff()).norm());
+}
+
+TEST(Dense_correspondence_bad_input, landmark_out_of_range_names_the_segment)
+{
+  std::vector<Correspondence_segment> segments(2);
+  segments[0].mesh = tube(5, 10, 3.);
+  segments[1].mesh = tube(6, 12, 3.);
+  segments[0].name = "a.off label 1";
+  segments[1].name = "b.off label 2";
+  segments[0].landmarks = {0, 3};
+  segments[1].landmarks = {0, 500};
+  try
+  {
+    compute_dense_correspondence(segments, "leg");
+    FAIL() << "no error";
+  }
+  catch(const Input_error& e)
+  {
+    EXPECT_EQ(e.source(), "b.off label 2");
+    EXPECT_NE(e.element().find("landmark 1"), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find("out of range"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Dense_correspondence_bad_input, different_numbers_of_boundary_loops)
+{
+  std::vector<Correspondence_segment> segments(2);
+  segments[0].mesh = tube(5, 10, 3.);
+  segments[1].mesh = capped_tube(6, 12, 3.);
+  segments[0].name = "a.off label 1";
+  segments[1].name = "a.off label 5";
+  try
+  {
+    compute_dense_correspondence(segments, "leg");
+    FAIL() << "no error";
+  }
+  catch(const Input_error& e)
+  {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("part type \"leg\""), std::string::npos) << what;
+    EXPECT_NE(what.find("a.off label 5"), std::string::npos) << what;
+    EXPECT_NE(what.find("a.off label 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("1 boundary loops but"), std::string::npos) << what;
+  }
+}
+
+TEST(Dense_correspondence_bad_input, degenerate_segments)
+{
+  std::vector<Correspondence_segment> segments(2);
+  segments[0].mesh = tube(5, 10, 3.);
+  segments[0].name = "good";
+  segments[1].name = "bad";
+  // Collinear points.
+  segments[1].mesh.points.resize(4, 3);
+  for(int v = 0; v < 4; ++v) segments[1].mesh.points.row(v) << v, 2. * v, 0.;
+  segments[1].mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+  EXPECT_THROW(compute_dense_correspondence(segments, "leg"), Input_error);
+  // No triangle at all.
+  segments[1].mesh = Indexed_mesh();
+  try
+  {
+    compute_dense_correspondence(segments, "leg");
+    FAIL() << "no error";
+  }
+  catch(const Input_error& e)
+  {
+    EXPECT_EQ(e.source(), "bad");
+    EXPECT_NE(e.problem().find("degenerate segment"), std::string::npos) << e.what();
+  }
+  // Non-finite coordinates.
+  segments[1].mesh = tube(5, 10, 3.);
+  segments[1].mesh.points(3, 1) = std::nan("");
+  EXPECT_THROW(compute_dense_correspondence(segments, "leg"), Input_error);
+  EXPECT_THROW(compute_dense_correspondence({}, "leg"), Input_error);
+}
+
+} // namespace
