@@ -17,19 +17,33 @@ namespace internal {
 std::vector<double> edge_graph_distances(const Point_matrix& points, const std::vector<Cluster_edge>& edges,
                                          const std::vector<int>& sources)
 {
+  std::vector<double> lengths;
+  lengths.reserve(edges.size());
+  for(const Cluster_edge& e : edges) lengths.push_back((points.row(e.source) - points.row(e.target)).norm());
+  return edge_graph_shortest_paths(static_cast<int>(points.rows()), edges, lengths, sources).distance;
+}
+
+Edge_graph_paths edge_graph_shortest_paths(int n, const std::vector<Cluster_edge>& edges,
+                                           const std::vector<double>& weights, const std::vector<int>& sources)
+{
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
                                       boost::property<boost::edge_weight_t, double>>;
-  const int n = static_cast<int>(points.rows());
   // One extra vertex joined to every source by a zero-length edge turns the
   // multi-source search into a single Dijkstra run.
   Graph g(n + 1);
-  for(const Cluster_edge& e : edges)
-    boost::add_edge(e.source, e.target, (points.row(e.source) - points.row(e.target)).norm(), g);
+  for(std::size_t e = 0; e < edges.size(); ++e) boost::add_edge(edges[e].source, edges[e].target, weights[e], g);
   for(int s : sources) boost::add_edge(n, s, 0., g);
-  std::vector<double> distance(n + 1, std::numeric_limits<double>::infinity());
-  boost::dijkstra_shortest_paths(g, n, boost::distance_map(distance.data()));
-  distance.pop_back();
-  return distance;
+  Edge_graph_paths paths;
+  paths.distance.assign(std::size_t(n) + 1, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> predecessor(std::size_t(n) + 1);
+  boost::dijkstra_shortest_paths(g, n, boost::distance_map(paths.distance.data()).predecessor_map(predecessor.data()));
+  paths.distance.pop_back();
+  paths.predecessor.resize(std::size_t(n));
+  for(int v = 0; v < n; ++v) {
+    const std::size_t p = predecessor[std::size_t(v)];
+    paths.predecessor[std::size_t(v)] = p == std::size_t(v) || p == std::size_t(n) ? -1 : static_cast<int>(p);
+  }
+  return paths;
 }
 
 std::vector<Cluster_edge> mesh_edges(const std::vector<Triangle>& triangles)

@@ -20,6 +20,17 @@ namespace internal {
 std::vector<double> edge_graph_distances(const Point_matrix& points, const std::vector<Cluster_edge>& edges,
                                          const std::vector<int>& sources);
 
+// Shortest paths from the nearest of `sources` over vertices 0 .. n-1
+// joined by `edges`, edge e costing `weights[e]` (positive). Cutting lines
+// need the paths themselves, with costs other than lengths.
+struct Edge_graph_paths
+{
+  std::vector<double> distance; // +infinity where unreachable
+  std::vector<int> predecessor; // previous vertex on a shortest path; -1 at sources and unreachable vertices
+};
+Edge_graph_paths edge_graph_shortest_paths(int n, const std::vector<Cluster_edge>& edges,
+                                           const std::vector<double>& weights, const std::vector<int>& sources);
+
 // Mesh edges of `triangles` (each once, source < target), in first-seen order.
 std::vector<Cluster_edge> mesh_edges(const std::vector<Triangle>& triangles);
 
