@@ -249,7 +249,7 @@ Cutting_result cut_mesh(const Indexed_mesh& mesh, const Cut_specification& spec,
     active[i] = true;
     if(without >= result.regions)
       cutter.fail(cut_name(spec, i),
-                  "does not separate the mesh (" + std::to_string(result.regions) + " regions with it, " +
+                  "does not separate the mesh (region count " + std::to_string(result.regions) + " with it, " +
                     std::to_string(without) +
                     " without): a closed cut must go all around a part, an open one must run from border to border");
   }

@@ -74,7 +74,7 @@ int run_cut(const Args& args, Context& context)
     cuts.push_back({{"name", spec.cuts[i].name},
                     {"closed", spec.cuts[i].closed.value_or(options.closed)},
                     {"points", spec.cuts[i].vertices.size()},
-                    {"path_vertices", result.paths[i].size()},
+                    {"edges", result.paths[i].size() - 1},
                     {"length", result.lengths[i]},
                     {"path", result.paths[i]}});
   const Json summary = {
@@ -95,10 +95,10 @@ int run_cut(const Args& args, Context& context)
             << file.mesh.number_of_faces() << " faces) along " << spec.cuts.size() << " cut"
             << (spec.cuts.size() == 1 ? "" : "s") << " into " << faces_of_label.size() << " part"
             << (faces_of_label.size() == 1 ? "" : "s") << "\n\n";
-  Table cut_table({"#", "name", "closed", "points", "path vertices", "length"}, {true, false, false, true, true, true});
+  Table cut_table({"#", "name", "closed", "points", "edges", "length"}, {true, false, false, true, true, true});
   for(std::size_t i = 0; i < cuts.size(); ++i)
     cut_table.add_row({std::to_string(i), spec.cuts[i].name, cuts[i]["closed"].get<bool>() ? "yes" : "no",
-                       std::to_string(spec.cuts[i].vertices.size()), std::to_string(result.paths[i].size()),
+                       std::to_string(spec.cuts[i].vertices.size()), std::to_string(result.paths[i].size() - 1),
                        format_number(result.lengths[i])});
   cut_table.print(std::cout);
   std::cout << "\n";
