@@ -43,9 +43,18 @@ struct Correspondence_type_report
   std::string type;              ///< part type
   int segments = 0;              ///< instances put in correspondence
   int template_vertices = 0;     ///< vertices of the remeshed template
-  double mean_before = 0., p95_before = 0.; ///< errors before refinement (fractions of the diameter)
-  double mean_after = 0., p95_after = 0.;   ///< errors after refinement
-  Correspondence_energies before, after;     ///< refinement energies
+  /// Mean and 95th percentile of the errors before refinement (fractions of the diameter).
+  /// @{
+  double mean_before = 0., p95_before = 0.;
+  /// @}
+  /// Mean and 95th percentile of the errors after refinement.
+  /// @{
+  double mean_after = 0., p95_after = 0.;
+  /// @}
+  /// Refinement energies before and after.
+  /// @{
+  Correspondence_energies before, after;
+  /// @}
   double seconds = 0.;           ///< time of `compute_dense_correspondence()`
 };
 
