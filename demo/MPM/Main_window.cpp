@@ -148,7 +148,10 @@ Main_window::Main_window(Session& session) : session_(session)
   graph_layout->addWidget(button("Remove this segment", graph_box, [this] {
     guarded([this] { session_.remove_segment(viewer_->selected_part()); });
   }));
-  graph_layout->addWidget(button("Duplicate its branch onto the root", graph_box, [this] {
+  graph_layout->addWidget(button("Remove it and its branch", graph_box, [this] {
+    guarded([this] { session_.remove_branch(viewer_->selected_part()); });
+  }));
+  graph_layout->addWidget(button("Duplicate its branch (onto a free site)", graph_box, [this] {
     guarded([this] { session_.duplicate_branch(viewer_->selected_part()); });
   }));
   graph_layout->addWidget(button("Back to the training example", graph_box, [this] { guarded([this] { session_.reset_graph(); }); }));
@@ -202,6 +205,9 @@ Main_window::Main_window(Session& session) : session_(session)
   connect(&session_, &Session::scene_changed, this, [this] {
     sync_controls();
     on_part_selected(-1);
+    if(session_.handle_vertices().empty())
+      statusBar()->showMessage("Shift+click: add a handle | Ctrl+drag a handle: deform | "
+                               "Alt+click: select a part | drag: rotate");
   });
   connect(viewer_, &Viewer::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(viewer_, &Viewer::part_selected, this, &Main_window::on_part_selected);
@@ -230,6 +236,8 @@ void Main_window::sync_controls()
   source_label_->setText(session_.has_model() ? session_.source_name() +
                                                   (session_.graph_edited() ? " (edited part graph)" : "")
                                               : "no model");
+  const int family = family_->findText(QString::fromStdString(session_.synthetic_family()));
+  if(family >= 0) family_->setCurrentIndex(family);
   mode_->setCurrentIndex(int(session_.mode()));
   caricature_->setValue(caricature_position(session_.caricature_factor()));
   caricature_label_->setText(QString::number(session_.caricature_factor(), 'f', 1));

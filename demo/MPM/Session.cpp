@@ -175,7 +175,8 @@ void Session::load_synthetic(const std::string& family, int vertices, unsigned s
   adopt_model(MPM::learn_morphable_part_model(synthetic.mesh, synthetic.annotation),
               QString("synthetic %1 (%2 vertices)")
                 .arg(QString::fromStdString(family))
-                .arg(synthetic.mesh.mesh.number_of_vertices()));
+                .arg(synthetic.mesh.mesh.number_of_vertices()),
+              MPM::family_name(synthetic.family));
 }
 
 void Session::load_labeled_mesh(const std::string& mesh, const std::string& labels, const std::string& annotation)
@@ -191,7 +192,7 @@ void Session::load_model(const std::string& path)
   adopt_model(MPM::load_model(path), QString::fromStdString(path));
 }
 
-void Session::adopt_model(MPM::Morphable_part_model&& model, const QString& source)
+void Session::adopt_model(MPM::Morphable_part_model&& model, const QString& source, const std::string& family)
 {
   if(model.examples.empty()) throw MPM::Input_error(source.toStdString(), "model", "has no training example");
   // Derived repetition rules let the grammar lengthen chains (a finger).
@@ -199,6 +200,7 @@ void Session::adopt_model(MPM::Morphable_part_model&& model, const QString& sour
   model_ = std::move(model);
   has_model_ = true;
   source_ = source;
+  family_ = family;
   edit_graph_ = MPM::part_graph_of_example(model_, 0);
   graph_edited_ = false;
   mode_ = Edit_mode::deform;
@@ -547,15 +549,43 @@ void Session::remove_segment(int node)
   rebuild();
 }
 
-int Session::duplicate_branch(int node)
+void Session::remove_branch(int node)
 {
   MPM::Part_graph graph = edit_graph_;
-  const int r = MPM::root_node(graph);
-  const int copy = MPM::duplicate_branch(model_, graph, node, r, r);
+  MPM::remove_branch(model_, graph, node, MPM::root_node(graph));
   edit_graph_ = std::move(graph);
   graph_edited_ = true;
   rebuild();
-  return copy;
+}
+
+int Session::duplicate_branch(int node)
+{
+  const int r = MPM::root_node(edit_graph_);
+  const std::vector<int> branch = MPM::branch_nodes(edit_graph_, node, r);
+  // Onto the root if it has room, else onto the first part outside the
+  // branch with a free site that a rule docks to the branch's site.
+  std::vector<int> targets{r};
+  for(int n = 0; n < int(edit_graph_.nodes.size()); ++n)
+    if(n != r && std::find(branch.begin(), branch.end(), n) == branch.end()) targets.push_back(n);
+  std::string first_error;
+  for(int target : targets)
+  {
+    MPM::Part_graph graph = edit_graph_;
+    try
+    {
+      const int copy = MPM::duplicate_branch(model_, graph, node, r, target);
+      edit_graph_ = std::move(graph);
+      graph_edited_ = true;
+      rebuild();
+      return copy;
+    }
+    catch(const MPM::Input_error& e)
+    {
+      if(first_error.empty()) first_error = e.what();
+    }
+  }
+  throw MPM::Input_error("part graph", "part " + std::to_string(node),
+                         "no part has a free site for a copy of its branch (onto the root: " + first_error + ")");
 }
 
 void Session::reset_graph()

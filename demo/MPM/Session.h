@@ -108,6 +108,8 @@ public:
   /// @}
   bool has_model() const { return has_model_; }
   const QString& source_name() const { return source_; }
+  /// The synthetic family shown (its command-line name), or empty.
+  const std::string& synthetic_family() const { return family_; }
   const CGAL::MPM::Morphable_part_model& model() const { return model_; }
 
   /// \name What is shown
@@ -167,7 +169,10 @@ public:
   /// Inserts a segment into the docking between `node` and its neighbour toward the root; returns the new node.
   int insert_segment(int node);
   void remove_segment(int node);
-  /// Copies the branch at `node` onto the root node (a free site of it); returns the copy.
+  /// Removes `node` and everything hanging from it (seen from the root).
+  void remove_branch(int node);
+  /// Copies the branch at `node` onto the root, or else the first part with a
+  /// free site the grammar allows; returns the copy.
   int duplicate_branch(int node);
   /// Back to the training example's part graph.
   void reset_graph();
@@ -193,7 +198,7 @@ Q_SIGNALS:
   void positions_changed();
 
 private:
-  void adopt_model(CGAL::MPM::Morphable_part_model&& model, const QString& source);
+  void adopt_model(CGAL::MPM::Morphable_part_model&& model, const QString& source, const std::string& family = "");
   void rebuild();
   void set_scene(const CGAL::MPM::Indexed_mesh& rest, const CGAL::MPM::Part_graph& graph,
                  std::vector<int> face_nodes);
@@ -204,6 +209,7 @@ private:
   CGAL::MPM::Morphable_part_model model_;
   bool has_model_ = false;
   QString source_;
+  std::string family_;
   CGAL::MPM::Part_graph edit_graph_;  ///< the graph being edited (no vertices once edited)
   bool graph_edited_ = false;
   CGAL::MPM::Assembly assembly_;      ///< the embedded edited graph

@@ -175,7 +175,27 @@ void Viewer::frame_scene()
                             (session_.arap() ? 0.55 * diameter : 0.);
   const double half_height = ((p.rowwise() - centre) * u.transpose()).cwiseAbs().maxCoeff();
   const double aspect = height() > 0 ? double(width()) / height() : 1.;
-  camera()->fitSphere(sceneCenter(), 1.15 * std::max(half_height, half_width / std::max(aspect, 1e-3)));
+  camera()->setScreenWidthAndHeight(width(), height());
+  camera()->fitSphere(sceneCenter(), 1.1 * std::max(half_height, half_width / std::max(aspect, 1e-3)));
+  // Perspective enlarges what is near the camera: step back until a sample
+  // of the points (both copies when split) is inside the picture.
+  const Eigen::RowVector3d shift = (session_.arap() ? 0.55 * diameter : 0.) * r;
+  const Eigen::Index step = std::max<Eigen::Index>(1, p.rows() / 2000);
+  for(int attempt = 0; attempt < 30; ++attempt)
+  {
+    camera()->computeModelViewMatrix(); // projectedCoordinatesOf() reads cached matrices
+    camera()->computeProjectionMatrix();
+    double extent = 0.;
+    for(Eigen::Index i = 0; i < p.rows(); i += step)
+      for(int side = -1; side <= 1; side += 2)
+      {
+        const Eigen::RowVector3d x = p.row(i) + side * shift;
+        const Vec s = camera()->projectedCoordinatesOf(Vec(x(0), x(1), x(2)));
+        extent = std::max({extent, std::abs(2. * s.x / width() - 1.), std::abs(2. * s.y / height() - 1.)});
+      }
+    if(extent <= 0.92) break;
+    camera()->setPosition(sceneCenter() + (camera()->position() - sceneCenter()) * 1.08);
+  }
   update();
 }
 
@@ -329,7 +349,7 @@ void Viewer::draw()
   draw_points(handles, handle_color, 9.f);
   draw_points(dragged, dragged_color, 11.f);
   glEnable(GL_DEPTH_TEST);
-  draw_points(sites, QColor(255, 255, 255), 3.f);
+  draw_points(sites, QColor(255, 255, 255), 2.f);
   program_.release();
 
   if(split())
@@ -373,6 +393,15 @@ std::pair<int, int> Viewer::pick(const QPoint& pixel)
     }
   }
   return {best, face};
+}
+
+QPoint Viewer::handle_pixel(int index) const
+{
+  const Point_matrix targets = session_.handle_targets();
+  if(index < 0 || index >= targets.rows()) return QPoint(-1, -1);
+  const Vec shift = split() ? split_offset() : Vec(0, 0, 0);
+  const Vec s = camera()->projectedCoordinatesOf(Vec(targets(index, 0), targets(index, 1), targets(index, 2)) - shift);
+  return QPoint(int(std::lround(s.x)), int(std::lround(s.y)));
 }
 
 int Viewer::handle_near(const QPoint& pixel) const

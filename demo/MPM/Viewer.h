@@ -36,6 +36,8 @@ public:
   void frame_scene();
   int selected_part() const { return selected_part_; }
   void select_part(int node);
+  /// Where handle `index`'s target is drawn, in widget pixels.
+  QPoint handle_pixel(int index) const;
   bool show_seams = true;
   bool show_docking_sites = true;
 

@@ -10,8 +10,10 @@
 
 #include <QApplication>
 #include <QImage>
+#include <QMouseEvent>
 #include <QSet>
 #include <QStatusBar>
+#include <QWidget>
 
 #include <cmath>
 #include <fstream>
@@ -162,6 +164,15 @@ private:
     return int(v);
   }
 
+  void send_mouse(QEvent::Type type, const QPoint& at, Qt::KeyboardModifiers modifiers)
+  {
+    const Qt::MouseButton button = type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton;
+    const Qt::MouseButtons held = type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton;
+    QMouseEvent event(type, QPointF(at), button, held, modifiers);
+    QApplication::sendEvent(&window_.viewer(), &event);
+    QApplication::processEvents();
+  }
+
   // Waits for the solver's answer to everything posted so far.
   void settle()
   {
@@ -272,13 +283,22 @@ private:
       session_.reset();
       report();
     }
-    else if(c == "insert" || c == "remove" || c == "duplicate")
+    else if(c == "insert" || c == "remove" || c == "remove-branch" || c == "duplicate")
     {
-      arity(w, 1, 1, "insert|remove|duplicate PART");
+      arity(w, 1, 1, "insert|remove|remove-branch|duplicate PART");
       const int part = integer(w[1]);
-      if(c == "insert") std::cout << "  new part " << session_.insert_segment(part) << "\n";
+      if(c == "insert")
+      {
+        const int added = session_.insert_segment(part);
+        std::cout << "  new part " << added << "\n";
+      }
       else if(c == "remove") session_.remove_segment(part);
-      else std::cout << "  copy at part " << session_.duplicate_branch(part) << "\n";
+      else if(c == "remove-branch") session_.remove_branch(part);
+      else
+      {
+        const int copy = session_.duplicate_branch(part);
+        std::cout << "  copy at part " << copy << "\n";
+      }
       report();
     }
     else if(c == "reset-graph")
@@ -291,6 +311,63 @@ private:
     {
       arity(w, 0, 0, "parts");
       for(const std::string& line : session_.describe_parts()) std::cout << "  " << line << "\n";
+    }
+    else if(c == "click")
+    {
+      // The interactive path: a synthetic mouse click on the viewer.
+      arity(w, 3, 3, "click X Y shift|alt");
+      if(w[3] != "shift" && w[3] != "alt") throw Script_error("expected 'click X Y shift' or 'click X Y alt'");
+      const std::size_t before = session_.handle_vertices().size();
+      const QPoint at(integer(w[1]), integer(w[2]));
+      send_mouse(QEvent::MouseButtonPress, at, w[3] == "shift" ? Qt::ShiftModifier : Qt::AltModifier);
+      send_mouse(QEvent::MouseButtonRelease, at, w[3] == "shift" ? Qt::ShiftModifier : Qt::AltModifier);
+      if(w[3] == "shift")
+      {
+        if(session_.handle_vertices().size() == before) throw Script_error("no vertex under the pixel");
+        std::cout << "  " << session_.handle_vertices().size() << " handles\n";
+      }
+      else
+      {
+        if(window_.viewer().selected_part() < 0) throw Script_error("no part under the pixel");
+        std::cout << "  selected part " << window_.viewer().selected_part() << "\n";
+      }
+    }
+    else if(c == "mouse-drag")
+    {
+      // Ctrl+drag of a handle in small mouse moves, each posted to the
+      // solver thread as the window would; only the latest target counts.
+      arity(w, 3, 4, "mouse-drag HANDLE DX DY [STEPS]");
+      const int steps = w.size() > 4 ? integer(w[4]) : 20;
+      if(steps < 1) throw Script_error("STEPS must be at least 1");
+      settle();
+      const QPoint from = window_.viewer().handle_pixel(integer(w[1]));
+      if(from.x() < 0) throw Script_error("handle " + w[1] + " does not exist");
+      const QPoint by(integer(w[2]), integer(w[3]));
+      send_mouse(QEvent::MouseButtonPress, from, Qt::ControlModifier);
+      for(int i = 1; i <= steps; ++i) send_mouse(QEvent::MouseMove, from + by * i / steps, Qt::ControlModifier);
+      send_mouse(QEvent::MouseButtonRelease, from + by, Qt::ControlModifier);
+      report();
+    }
+    else if(c == "window-size")
+    {
+      // The window as a user sees it (the viewer takes the room left).
+      arity(w, 2, 2, "window-size WIDTH HEIGHT");
+      const int width = integer(w[1]), height = integer(w[2]);
+      if(width < 320 || height < 240 || width > 4096 || height > 4096)
+        throw Script_error("the window size must be between 320x240 and 4096x4096 pixels");
+      window_.viewer().setMinimumSize(0, 0);
+      window_.viewer().setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+      window_.resize(width, height);
+      QApplication::processEvents();
+      window_.viewer().frame_scene();
+    }
+    else if(c == "screenshot-window")
+    {
+      arity(w, 1, 1, "screenshot-window FILE.png");
+      settle();
+      if(!window_.grab().save(QString::fromStdString(w[1])))
+        throw Script_error("cannot write the screenshot '" + w[1] + "'");
+      std::cout << "  wrote " << w[1] << "\n";
     }
     else if(c == "select")
     {
@@ -478,7 +555,5 @@ int main(int argc, char** argv)
     return runner.run();
   }
   window.viewer().set_view(0., 20.);
-  window.statusBar()->showMessage("Shift+click a vertex to add a handle, Ctrl+drag a handle (black dot) to deform; "
-                                  "Alt+click a part to edit the part graph. Left drag rotates.");
   return app.exec();
 }

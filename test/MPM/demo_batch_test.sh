@@ -2,8 +2,9 @@
 # Copyright (c) 2026 CGAL-MPM contributors.
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
-# Runs the Qt demo under a virtual X server in batch mode: a scripted drag, a
-# symmetrize and a segment insertion on a small synthetic hand, screenshots
+# Runs the Qt demo under a virtual X server in batch mode: a picked handle
+# dragged by synthetic mouse events, a scripted drag, a symmetrize and a
+# segment insertion on a small synthetic hand, screenshots
 # after each, checked (by the demo's own check-image and compare-images
 # commands) to be not blank and to differ from one another. Then checks that
 # a script error fails with the script's line named.
@@ -25,6 +26,12 @@ synth hand 1500
 parts
 view 0 30
 screenshot $out/rest.png
+# the window's own path: Shift+click picks a vertex (AABB-tree ray), Ctrl+drag
+# moves its handle in 20 mouse moves, Alt+click selects a part
+click 120 150 shift
+mouse-drag 0 40 -30
+screenshot $out/mouse.png
+click 160 130 alt
 handles per-part 1
 drag 0 0.15 0.1 0.05
 screenshot $out/drag.png
@@ -34,6 +41,8 @@ deform
 insert 3
 screenshot $out/insert.png
 check-image $out/rest.png
+compare-images $out/rest.png $out/mouse.png
+compare-images $out/mouse.png $out/drag.png
 compare-images $out/rest.png $out/drag.png
 compare-images $out/drag.png $out/symmetrize.png
 compare-images $out/symmetrize.png $out/insert.png
