@@ -3,9 +3,8 @@
 #   cmake -DMODE=<mode> -DSOURCE_DIR=<repository root> [-DOUTPUT_DIR=<dir>]
 #         [-DDOXYGEN=<doxygen>] -P doc/MPM/manual.cmake
 #
-# MODE build     runs Doxygen on doc/MPM/Doxyfile into OUTPUT_DIR/html and
-#                copies the pictures that the Markdown pages link to by
-#                relative path (results/, fig/), which Doxygen leaves alone.
+# MODE build     runs Doxygen on doc/MPM/Doxyfile into OUTPUT_DIR/html
+#                (pictures are found in doc/MPM and below, IMAGE_PATH).
 # MODE warnings  runs Doxygen into a fresh OUTPUT_DIR with its warnings sent
 #                to a log and fails listing them (undocumented members,
 #                unresolved \ref, missing examples or images); then checks,
@@ -25,14 +24,6 @@ if(NOT SOURCE_DIR)
 endif()
 set(doc_dir "${SOURCE_DIR}/doc/MPM")
 
-# Copies the pictures of doc/MPM/SUBDIR to OUTPUT_DIR/html/SUBDIR.
-function(copy_linked_pictures subdir)
-  file(GLOB pictures "${doc_dir}/${subdir}/*.png" "${doc_dir}/${subdir}/*.jpg" "${doc_dir}/${subdir}/*.svg")
-  if(pictures)
-    file(COPY ${pictures} DESTINATION "${OUTPUT_DIR}/html/${subdir}")
-  endif()
-endfunction()
-
 # Runs Doxygen from the repository root (the Doxyfile's paths are relative
 # to it) with the extra settings EXTRA appended after the Doxyfile.
 function(run_doxygen extra)
@@ -48,8 +39,6 @@ function(run_doxygen extra)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "doxygen failed (${status})")
   endif()
-  copy_linked_pictures(results)
-  copy_linked_pictures(fig)
 endfunction()
 
 if(MODE STREQUAL "build")
