@@ -37,8 +37,9 @@ double milliseconds_since(std::chrono::steady_clock::time_point start)
 }
 
 // ARAP is a baseline shown next to MPM: enough iterations to settle a drag
-// on the demo's meshes, with CGAL's movement tolerance.
-constexpr int arap_iterations_per_frame = 100;
+// on the demo's meshes, in chunks short enough not to hold MPM's frames up.
+constexpr int arap_iterations_per_chunk = 10;
+constexpr int arap_iterations_per_request = 200;
 constexpr double arap_tolerance = 1e-4;
 
 } // namespace
@@ -75,74 +76,95 @@ void Solver_thread::run()
   std::shared_ptr<const MPM::Embedding_problem> built;
   double built_coupling = 0.;
   bool solver_has_handles = false;
+  Solve_request r;      // the request being worked on
+  Solve_frame f;        // its frame so far
+  int arap_iterations = 0;
+  bool unfinished = false; // ARAP has iterations left for `r`
   for(;;)
   {
-    Solve_request r;
+    bool fresh = false;
     {
       QMutexLocker lock(&mutex_);
-      while(!has_pending_ && !stop_) wake_.wait(&mutex_);
+      while(!has_pending_ && !stop_ && !unfinished) wake_.wait(&mutex_);
       if(stop_) return;
-      r = std::move(pending_);
-      has_pending_ = false;
+      if(has_pending_)
+      {
+        r = std::move(pending_);
+        has_pending_ = false;
+        fresh = true;
+      }
     }
-    Solve_frame f;
-    f.serial = r.serial;
-    try
+    if(fresh)
     {
-      if(r.problem != built || r.options.coupling_weight != built_coupling)
+      f = Solve_frame();
+      f.serial = r.serial;
+      arap_iterations = 0;
+      try
       {
-        solver.reset();
-        arap.reset();
-        built.reset();
-        solver = std::make_unique<MPM::Embedding_solver>(*r.problem, r.options);
-        built = r.problem;
-        built_coupling = r.options.coupling_weight;
-        solver_has_handles = false;
+        if(r.problem != built || r.options.coupling_weight != built_coupling)
+        {
+          solver.reset();
+          arap.reset();
+          built.reset();
+          solver = std::make_unique<MPM::Embedding_solver>(*r.problem, r.options);
+          built = r.problem;
+          built_coupling = r.options.coupling_weight;
+          solver_has_handles = false;
+        }
+        else if(r.restart)
+        {
+          solver->reset();
+          if(arap) arap->reset();
+        }
+        if(!r.handle_vertices.empty())
+        {
+          solver->set_handles(r.handle_vertices, r.handle_targets);
+          solver_has_handles = true;
+        }
+        else if(solver_has_handles)
+        {
+          solver->clear_handles();
+          solver_has_handles = false;
+        }
+        const auto start = std::chrono::steady_clock::now();
+        const MPM::Solve_report report = solver->solve();
+        f.positions = solver->positions();
+        f.ms = milliseconds_since(start);
+        f.iterations = report.iterations;
+        f.converged = report.converged;
+        f.energy = report.energy();
+        if(!f.positions.allFinite())
+          throw MPM::Computation_error("the solver produced non-finite positions (try smaller drags)");
       }
-      else if(r.restart)
+      catch(const std::exception& e)
       {
-        solver->reset();
-        if(arap) arap->reset();
+        f.error = QString::fromStdString(e.what());
+        f.positions.resize(0, 3);
       }
-      if(!r.handle_vertices.empty())
-      {
-        solver->set_handles(r.handle_vertices, r.handle_targets);
-        solver_has_handles = true;
-      }
-      else if(solver_has_handles)
-      {
-        solver->clear_handles();
-        solver_has_handles = false;
-      }
-      const auto start = std::chrono::steady_clock::now();
-      const MPM::Solve_report report = solver->solve();
-      f.positions = solver->positions();
-      f.ms = milliseconds_since(start);
-      f.iterations = report.iterations;
-      f.converged = report.converged;
-      f.energy = report.energy();
-      if(!f.positions.allFinite())
-        throw MPM::Computation_error("the solver produced non-finite positions (try smaller drags)");
     }
-    catch(const std::exception& e)
-    {
-      f.error = QString::fromStdString(e.what());
-      f.positions.resize(0, 3);
-    }
+    // ARAP runs in short chunks, continued while no new request waits, so
+    // that a drag with ARAP shown still gets MPM frames at MPM's pace.
+    unfinished = false;
     if(r.arap && built)
     {
       try
       {
         if(r.handle_vertices.empty()) throw MPM::Input_error("ARAP", "handles", "there are none: pick some first");
         if(!arap) arap = std::make_unique<MPM::Arap_deformation>(r.problem->mesh);
-        MPM::Handle_set handles;
-        handles.vertices = r.handle_vertices;
-        handles.targets = r.handle_targets;
-        arap->set_handles(handles);
+        if(fresh)
+        {
+          MPM::Handle_set handles;
+          handles.vertices = r.handle_vertices;
+          handles.targets = r.handle_targets;
+          arap->set_handles(handles);
+        }
         const auto start = std::chrono::steady_clock::now();
-        f.arap_iterations = arap->deform(arap_iterations_per_frame, arap_tolerance);
+        const int done = arap->deform(arap_iterations_per_chunk, arap_tolerance);
+        arap_iterations += done;
+        f.arap_iterations = arap_iterations;
         f.arap_positions = arap->positions();
-        f.arap_ms = milliseconds_since(start);
+        f.arap_ms = (fresh ? 0. : f.arap_ms) + milliseconds_since(start);
+        unfinished = done == arap_iterations_per_chunk && arap_iterations < arap_iterations_per_request;
       }
       catch(const std::exception& e)
       {
@@ -150,6 +172,7 @@ void Solver_thread::run()
         f.arap_positions.resize(0, 3);
       }
     }
+    f.final = !unfinished;
     Q_EMIT frame_ready(f);
   }
 }
@@ -332,17 +355,18 @@ void Session::on_frame(const Solve_frame& frame)
 
 bool Session::wait_until_solved(int timeout_ms)
 {
-  if(frame_.serial >= serial_) return true;
+  const auto answered = [this] { return frame_.serial >= serial_ && frame_.final; };
+  if(answered()) return true;
   // Sleeps in an event loop (the solver thread has the cores) until the
   // frame of the latest request or the time-out arrives.
   QEventLoop loop;
   QTimer::singleShot(timeout_ms, &loop, &QEventLoop::quit);
-  const QMetaObject::Connection c = connect(this, &Session::positions_changed, &loop, [this, &loop] {
-    if(frame_.serial >= serial_) loop.quit();
+  const QMetaObject::Connection c = connect(this, &Session::positions_changed, &loop, [&answered, &loop] {
+    if(answered()) loop.quit();
   });
   loop.exec();
   disconnect(c);
-  return frame_.serial >= serial_;
+  return answered();
 }
 
 // ---------------------------------------------------------------------------

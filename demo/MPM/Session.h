@@ -63,6 +63,7 @@ struct Solve_frame
   double arap_ms = 0.;
   QString error;               ///< the MPM solve failed (positions are the previous ones)
   QString arap_error;          ///< why there is no ARAP result
+  bool final = true;           ///< the last frame of its request (ARAP may send several)
 };
 
 /// Runs `Embedding_solver::solve()` (reduced global step, warm started) and
