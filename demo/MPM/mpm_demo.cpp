@@ -189,6 +189,15 @@ private:
     std::cout << "  " << window_.solver_status().toStdString() << "\n";
   }
 
+  void report_model()
+  {
+    const Point_matrix& p = session_.rest().points;
+    std::cout << "  " << session_.source_name().toStdString() << ": " << p.rows() << " vertices, "
+              << session_.rest().number_of_faces() << " faces, " << session_.shown_graph().nodes.size() << " parts, "
+              << session_.model().types.size() << " part types, " << session_.model().rules.size() << " rules\n";
+    report();
+  }
+
   void execute(const std::vector<std::string>& w)
   {
     const std::string& c = w[0];
@@ -199,19 +208,19 @@ private:
     {
       arity(w, 1, 3, "synth FAMILY [VERTICES [SEED]]");
       session_.load_synthetic(w[1], w.size() > 2 ? integer(w[2]) : default_vertices, w.size() > 3 ? unsigned(integer(w[3])) : 1u);
-      report();
+      report_model();
     }
     else if(c == "load")
     {
       arity(w, 2, 3, "load MESH LABELS [ANNOTATION]");
       session_.load_labeled_mesh(w[1], w[2], w.size() > 3 ? w[3] : "");
-      report();
+      report_model();
     }
     else if(c == "model")
     {
       arity(w, 1, 1, "model FILE.mpm");
       session_.load_model(w[1]);
-      report();
+      report_model();
     }
     else if(c == "handles")
     {
