@@ -11,6 +11,7 @@
 #include <CGAL/MPM/Synthetic_model.h>
 
 #include "Io_test_support.h"
+#include "Learned_models.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -30,15 +31,8 @@ namespace {
 
 using namespace CGAL::MPM;
 
-const Synthetic_model& small_hand()
-{
-  static const Synthetic_model hand = [] {
-    Synthetic_options options;
-    options.vertices = 3000;
-    return make_synthetic_model(Synthetic_family::hand, options);
-  }();
-  return hand;
-}
+// The 3k-vertex hand, shared with the suites that learn it.
+const Synthetic_model& small_hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth; }
 
 // The loop of mesh edges between the faces labelled `a` and those labelled
 // `b`, as vertices in order around it.

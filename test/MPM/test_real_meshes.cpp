@@ -15,6 +15,8 @@
 #include <CGAL/MPM/Shape_space.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
+#include "Learned_models.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,7 +38,7 @@ std::string data_file(const std::string& name)
 
 std::string example_file(const std::string& name) { return std::string(MPM_EXAMPLE_DATA_DIR) + "/" + name; }
 
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
+using mpm_test::diagonal;
 
 #define MPM_REQUIRE_DATA(path)                                                                                   \
   if(!std::ifstream(path).good())                                                                              \
