@@ -72,7 +72,7 @@ Main_window::Main_window(Session& session) : session_(session)
     family_->addItem(QString::fromStdString(CGAL::MPM::family_name(f)));
   synth_row->addWidget(family_);
   synth_row->addWidget(button("Synthesize", model_box, [this] {
-    guarded([this] { session_.load_synthetic(family_->currentText().toStdString(), 3000, 1); });
+    guarded([this] { session_.load_synthetic(family_->currentText().toStdString(), default_synthetic_vertices, 1); });
   }));
   model_layout->addLayout(synth_row);
   model_layout->addWidget(button("Open mesh + labels + annotation...", model_box, [this] { open_mesh(); }));

@@ -35,10 +35,6 @@ const char* const usage_text =
   "without interaction and exits: 0 when every command succeeded, 1 on the first\n"
   "error (named by its line), 2 for a bad command line.\n";
 
-// Vertices of a synthetic model when not given: learning takes about a
-// second and dragging stays fluid on a laptop.
-constexpr int default_vertices = 3000;
-
 // The solver must answer a batch request within this time.
 constexpr int batch_timeout_ms = 120000;
 
@@ -207,7 +203,7 @@ private:
     if(c == "synth")
     {
       arity(w, 1, 3, "synth FAMILY [VERTICES [SEED]]");
-      session_.load_synthetic(w[1], w.size() > 2 ? integer(w[2]) : default_vertices, w.size() > 3 ? unsigned(integer(w[3])) : 1u);
+      session_.load_synthetic(w[1], w.size() > 2 ? integer(w[2]) : default_synthetic_vertices, w.size() > 3 ? unsigned(integer(w[3])) : 1u);
       report_model();
     }
     else if(c == "load")
@@ -487,7 +483,7 @@ int main(int argc, char** argv)
   app.setApplicationName("mpm_demo");
 
   std::string batch, family = "hand", model, mesh, labels = "components", annotation;
-  int vertices = default_vertices, width = 0, height = 0;
+  int vertices = default_synthetic_vertices, width = 0, height = 0;
   unsigned seed = 1;
   const QStringList args = app.arguments();
   try
