@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -100,6 +101,13 @@ TEST(Real_meshes, DiplodocusLegsAreCutOff)
   std::cout << "\n";
   EXPECT_GT(faces[0], 30000);
   EXPECT_EQ(highest[0], top); // the head belongs to the body
+
+  // Concave is judged from the outside, whichever way the faces turn.
+  Indexed_mesh flipped = m;
+  for(Triangle& t : flipped.triangles) std::swap(t[1], t[2]);
+  const Cutting_result again = cut_mesh(flipped, d.cuts, Cutting_options(), "flipped diplodocus");
+  EXPECT_EQ(again.paths, d.cut.paths);
+  EXPECT_EQ(again.mesh.face_labels, d.mesh.face_labels);
 }
 
 TEST(Real_meshes, ArmadilloLimbsAreCutOff)
