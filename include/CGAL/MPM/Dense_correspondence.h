@@ -45,7 +45,7 @@ struct Dense_correspondence_options
   /// Largest move of a vertex per refinement step, as a fraction of its mean
   /// edge length on the segment.
   double refinement_step = 0.2;
-  double sample_weight = 10.;     ///< weight of E_sample against trace(Sigma)
+  double sample_weight = 0.1;     ///< weight of E_sample against trace(Sigma)
   double boundary_weight = 10.;   ///< weight of E_boundary against trace(Sigma)
   /// Called with a stage name and the fraction done (0..1).
   std::function<void(const std::string& stage, double fraction)> progress;
@@ -56,7 +56,10 @@ struct Dense_correspondence_options
 struct Correspondence_energies
 {
   double boundary = 0.; ///< E_boundary: landmarks and boundary vertices off their curves
-  double sample = 0.;   ///< E_sample: Laplacian (sampling) differences against the mean shape
+  /// E_sample: uniform-Laplacian (sampling) differences against the mean
+  /// shape, scaled by (bounding-box diagonal / mean edge length)^2 of the
+  /// template so that it weighs alike at every resolution.
+  double sample = 0.;
   double trace = 0.;    ///< trace(Sigma) after rigid alignment to the mean (eq. 4.2)
   /// The weighted sum minimized.
   double total(double sample_weight, double boundary_weight) const
