@@ -28,6 +28,8 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <string>
+#include <type_traits>
 
 namespace CGAL {
 namespace MPM {
@@ -45,7 +47,24 @@ public:
   virtual ~Vertex_block_solver() = default;
   virtual bool factor(const Sparse& a) = 0;
   virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) = 0;
+  // After a failed factor(): the row with the smallest pivot, or -1 when the
+  // solver does not tell.
+  virtual int weakest_row() const { return -1; }
 };
+
+// LDLT factors an indefinite matrix without complaint (LLT refuses it): the
+// pivots say whether the matrix was positive definite, and where not.
+template <class Ldlt>
+int non_positive_pivot_row(const Ldlt& ldlt)
+{
+  const Eigen::VectorXd& pivots = ldlt.vectorD();
+  Eigen::Index weakest = 0;
+  if(pivots.size() == 0) return -1;
+  for(Eigen::Index i = 0; i < pivots.size(); ++i)
+    if(!(pivots[i] >= pivots[weakest])) weakest = i;
+  if(pivots[weakest] > 0) return -1;
+  return ldlt.permutationPinv().indices()[weakest];
+}
 
 template <class EigenSolver>
 class Traits_solver : public Vertex_block_solver
@@ -55,8 +74,13 @@ public:
   {
     matrix_ = std::make_unique<typename Traits::Matrix>(a);
     double d;
-    return traits_.factor(*matrix_, d);
+    if(!traits_.factor(*matrix_, d)) return false;
+    if constexpr(std::is_same_v<EigenSolver, Eigen::SimplicialLDLT<Sparse>>)
+      return (weakest_ = non_positive_pivot_row(traits_.solver())) < 0;
+    return true;
   }
+
+  int weakest_row() const override { return weakest_; }
   // Columns are independent triangular solves: on large meshes they run in
   // parallel, which is most of the cost of a displayed frame.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) override
@@ -76,6 +100,7 @@ private:
   using Traits = CGAL::Eigen_solver_traits<EigenSolver>;
   Traits traits_;
   std::unique_ptr<typename Traits::Matrix> matrix_;
+  int weakest_ = -1;
 };
 
 std::unique_ptr<Vertex_block_solver> make_vertex_block_solver(Sparse_solver which)
@@ -211,6 +236,41 @@ struct Embedding_solver::Impl
   void global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda);
   double energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only = -1) const;
   void check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
+  [[noreturn]] void fail_on_non_finite_energy(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
+  std::string largest_energy_term(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
+
+  // Everything iterating changes, so that a failed solve leaves the state it found.
+  struct State
+  {
+    Point_matrix positions;
+    Eigen::VectorXd coordinates;
+    std::vector<Eigen::Matrix3d> rotations, w_blocks;
+    std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations;
+    bool implicit = false, positions_valid = true;
+    int iterations_since_reset = 0;
+  };
+  State save() const
+  {
+    return {positions, coordinates, rotations, w_blocks, vertex_rotations, implicit, positions_valid, iterations_since_reset};
+  }
+  void restore(State s)
+  {
+    positions = std::move(s.positions);
+    coordinates = std::move(s.coordinates);
+    rotations = std::move(s.rotations);
+    w_blocks = std::move(s.w_blocks);
+    vertex_rotations = std::move(s.vertex_rotations);
+    implicit = s.implicit;
+    positions_valid = s.positions_valid;
+    iterations_since_reset = s.iterations_since_reset;
+  }
+  // The energy of one handle a bounding-box diagonal away from its target:
+  // the unit below which energy changes are rounding, not divergence.
+  double energy_unit() const
+  {
+    const double diagonal = n > 0 ? (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).norm() : 1.;
+    return options.handle_weight * mean_diagonal * std::max(diagonal * diagonal, std::numeric_limits<double>::min());
+  }
 };
 
 Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_options& o)
@@ -220,6 +280,17 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
   mesh.points.rowwise() -= origin;
   if(!(problem.sigma_sub > 0) || !std::isfinite(problem.sigma_sub))
     throw Input_error("embedding problem", "sigma_sub", "must be positive and finite");
+  // A negative weight makes the system indefinite and the energy unbounded.
+  const auto require = [](bool ok, const std::string& option, double value, const std::string& rule) {
+    if(!ok) throw Input_error("embedding options", option, "must be " + rule + " (got " + std::to_string(value) + ")");
+  };
+  require(o.handle_weight > 0 && std::isfinite(o.handle_weight), "handle_weight", o.handle_weight, "positive and finite");
+  require(o.anchor_weight >= 0 && std::isfinite(o.anchor_weight), "anchor_weight", o.anchor_weight, "non-negative and finite");
+  require(o.coupling_weight >= 0 && std::isfinite(o.coupling_weight), "coupling_weight", o.coupling_weight,
+          "non-negative and finite");
+  require(o.tolerance >= 0 && std::isfinite(o.tolerance), "tolerance", o.tolerance, "non-negative and finite");
+  require(o.max_iterations >= 0, "max_iterations", o.max_iterations, "non-negative");
+  require(o.anderson_history >= 0, "anderson_history", o.anderson_history, "non-negative");
   if(!problem.mesh.points.allFinite())
     throw Input_error("embedding problem", "rest positions", "contain non-finite coordinates");
   for(std::size_t c = 0; c < problem.clusters.size(); ++c)
@@ -413,7 +484,17 @@ void Embedding_solver::Impl::factor()
   system.makeCompressed();
   solver = make_vertex_block_solver(options.sparse_solver);
   if(!solver->factor(system))
-    throw Computation_error("embedding: factorization of the vertex block failed (a cluster may be degenerate)");
+  {
+    const int row = solver->weakest_row();
+    std::string where = "a cluster may be degenerate";
+    for(const Cluster_data& c : clusters)
+      if(row >= 0 && std::find(c.vertices.begin(), c.vertices.end(), row) != c.vertices.end())
+      {
+        where = "at vertex " + std::to_string(row) + " of " + c.name;
+        break;
+      }
+    throw Computation_error("embedding: the vertex block is not positive definite (" + where + ")");
+  }
   factored = true;
   handle_terms_ready = false;
   factored_handles = handle_vertices;
@@ -824,7 +905,7 @@ void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd
   Sparse k(size, size);
   k.setFromTriplets(t.begin(), t.end());
   Eigen::SimplicialLDLT<Sparse> ldlt(k);
-  if(ldlt.info() != Eigen::Success)
+  if(ldlt.info() != Eigen::Success || non_positive_pivot_row(ldlt) >= 0)
     throw Computation_error("embedding: factorization of the full system failed");
   const Eigen::VectorXd x = ldlt.solve(rhs);
   v.resize(n, 3);
@@ -866,6 +947,55 @@ void Embedding_solver::Impl::check_finite(const Point_matrix& v, const Eigen::Ve
     if(bad) throw Computation_error("embedding: non-finite result in " + c.name + "; the previous state is kept");
   }
   throw Computation_error("embedding: non-finite result; the previous state is kept");
+}
+
+// Finite iterates can still give an energy that overflows (a handle target
+// astronomically far away): name the term that does.
+void Embedding_solver::Impl::fail_on_non_finite_energy(const Point_matrix& v, const Eigen::VectorXd& lambda) const
+{
+  check_finite(v, lambda);
+  // A far target drags every handle of its piece along: blame the handle
+  // whose target is farthest from its rest position.
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  std::size_t farthest = handle_vertices.size();
+  bool overflow = false;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+  {
+    overflow = overflow || !std::isfinite(handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm());
+    const double reach = (handle_targets.row(h) - mesh.points.row(handle_vertices[h])).norm();
+    if(farthest == handle_vertices.size() ||
+       reach > (handle_targets.row(farthest) - mesh.points.row(handle_vertices[farthest])).norm())
+      farthest = h;
+  }
+  if(overflow)
+    throw Computation_error("embedding: the energy of handle " + std::to_string(farthest) + " (vertex " +
+                            std::to_string(handle_vertices[farthest]) +
+                            ") overflows (its target is too far away); the previous state is kept");
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+    if(!std::isfinite(energy_of(v, lambda, static_cast<int>(c))))
+      throw Computation_error("embedding: the energy of " + clusters[c].name +
+                              " overflows (its vertices are too far from its shape space); the previous state is kept");
+  throw Computation_error("embedding: the energy overflows; the previous state is kept");
+}
+
+// The term holding most of the energy: where a diverging solve went wrong.
+std::string Embedding_solver::Impl::largest_energy_term(const Point_matrix& v, const Eigen::VectorXd& lambda) const
+{
+  std::string worst = "the handles";
+  double worst_energy = 0.;
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    worst_energy += handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm();
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const double e = energy_of(v, lambda, static_cast<int>(c));
+    if(!(e <= worst_energy))
+    {
+      worst_energy = e;
+      worst = clusters[c].name;
+    }
+  }
+  return worst;
 }
 
 Embedding_solver::Embedding_solver(const Embedding_problem& problem, const Embedding_options& options)
@@ -945,7 +1075,8 @@ double Embedding_solver::iterate()
       lap(t.right_hand_side_ms);
       const double e = d.reduced_energy(lambda, w);
       lap(t.energy_ms);
-      if(!lambda.allFinite() || !std::isfinite(e)) d.check_finite(d.positions, lambda);
+      if(!lambda.allFinite()) d.check_finite(d.positions, lambda);
+      if(!std::isfinite(e)) d.fail_on_non_finite_energy(d.positions_from(lambda), lambda);
       d.coordinates = std::move(lambda);
       d.w_blocks = std::move(w);
       d.implicit = true;
@@ -973,12 +1104,13 @@ double Embedding_solver::iterate()
         lap(t.direct_ms);
       }
       d.check_finite(v, lambda);
+      mark = Clock::now();
+      const double e = d.energy_of(v, lambda);
+      lap(t.energy_ms);
+      if(!std::isfinite(e)) d.fail_on_non_finite_energy(v, lambda);
       d.positions = std::move(v);
       d.coordinates = std::move(lambda);
       ++d.iterations_since_reset;
-      mark = Clock::now();
-      const double e = d.energy_of(d.positions, d.coordinates);
-      lap(t.energy_ms);
       return e;
     }
     }
@@ -1052,6 +1184,21 @@ Solve_report Embedding_solver::solve()
 {
   Impl& d = *impl_;
   if(!d.handle_terms_ready) d.prepare_handle_terms();
+  Impl::State entry = d.save();
+  try
+  {
+    return solve_from_current_state();
+  }
+  catch(const Computation_error&)
+  {
+    d.restore(std::move(entry));
+    throw;
+  }
+}
+
+Solve_report Embedding_solver::solve_from_current_state()
+{
+  Impl& d = *impl_;
   // From the rest state, start at the best rigid placement of the handles
   // when it fits them better: a rigid edit is then solved at once.
   if(d.iterations_since_reset == 0 && d.handle_vertices.size() >= 3)
@@ -1102,6 +1249,9 @@ Solve_report Embedding_solver::solve()
 
   Anderson_acceleration anderson(std::max(0, d.options.anderson_history));
   Eigen::VectorXd x = pack();
+  const double rounding = 1e-9 * d.energy_unit();
+  double best = previous;
+  int rises = 0;
   for(int it = 0; it < d.options.max_iterations; ++it)
   {
     double e = iterate();
@@ -1128,6 +1278,16 @@ Solve_report Embedding_solver::solve()
         anderson.restart();
       }
     }
+    // Each step minimizes the energy over its block of unknowns, so a rise
+    // beyond rounding means the numbers, not the model, went wrong.
+    if(e > best + 1e-3 * std::max(best, rounding)) ++rises;
+    else rises = 0;
+    if(rises >= 3 || e > best + 1e3 * std::max(best, rounding))
+      throw Computation_error("embedding: diverging in iteration " + std::to_string(it + 1) + " (energy " +
+                              std::to_string(e) + ", lowest " + std::to_string(best) + "), mostly in " +
+                              d.largest_energy_term(d.materialized_positions(), d.coordinates) +
+                              "; the previous state is kept");
+    best = std::min(best, e);
     report.energies.push_back(e);
     ++report.iterations;
     if(previous - e <= d.options.tolerance * std::max(previous, std::numeric_limits<double>::min()))

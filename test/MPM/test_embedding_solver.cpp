@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include <functional>
 #include <map>
 
 using namespace CGAL::MPM;
@@ -187,6 +188,99 @@ TEST(Embedding_solver, rejects_bad_handles)
   solver.set_handles({3}, rows(l.truth.mesh.mesh.points, {3}));
   solver.solve();
   EXPECT_TRUE(solver.positions().allFinite());
+}
+
+TEST(Embedding_solver, rejects_bad_options)
+{
+  const Learned& l = learned(Synthetic_family::hexa_grid);
+  const Embedding_problem problem = make_deformation_problem(l.model);
+  const auto message = [&](Embedding_options o) {
+    try
+    {
+      Embedding_solver solver(problem, o);
+    }
+    catch(const Input_error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<std::string, std::function<void(Embedding_options&)>>> cases = {
+    {"handle_weight", [](Embedding_options& o) { o.handle_weight = -1; }},
+    {"anchor_weight", [&](Embedding_options& o) { o.anchor_weight = nan; }},
+    {"coupling_weight", [](Embedding_options& o) { o.coupling_weight = -0.5; }},
+    {"tolerance", [&](Embedding_options& o) { o.tolerance = inf; }},
+    {"max_iterations", [](Embedding_options& o) { o.max_iterations = -3; }},
+    {"anderson_history", [](Embedding_options& o) { o.anderson_history = -1; }}};
+  for(const auto& [option, spoil] : cases)
+  {
+    Embedding_options o;
+    spoil(o);
+    EXPECT_NE(message(o).find(option), std::string::npos) << option;
+  }
+}
+
+// A target far beyond what doubles can square: every global step fails, the
+// error names the handle, and the solver keeps the state it had.
+class Overflowing_handle : public ::testing::TestWithParam<Global_step>
+{};
+
+TEST_P(Overflowing_handle, fails_naming_the_handle_and_keeps_the_state)
+{
+  const Learned& l = learned(Synthetic_family::hand);
+  Embedding_options options;
+  options.global_step = GetParam();
+  Embedding_solver solver(make_deformation_problem(l.model), options);
+  const std::vector<int> handles = handle_per_part(l.truth);
+  const Point_matrix pose = l.truth.draw_pose(3);
+  solver.set_handles(handles, rows(pose, handles));
+  solver.solve();
+  const Point_matrix before = solver.positions();
+  const double energy_before = solver.energy();
+  Point_matrix far = rows(pose, handles);
+  far(1, 0) = 1e200;
+  solver.set_handles(handles, far);
+  try
+  {
+    solver.solve();
+    FAIL() << "no error";
+  }
+  catch(const Computation_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("handle 1 "), std::string::npos) << e.what();
+  }
+  EXPECT_EQ((solver.positions() - before).norm(), 0.);
+  // Back to reasonable targets, the solve goes on from the kept state.
+  solver.set_handles(handles, rows(pose, handles));
+  EXPECT_NEAR(solver.energy(), energy_before, 1e-9 * energy_before);
+  solver.solve();
+  EXPECT_TRUE(solver.positions().allFinite());
+  EXPECT_LE(solver.energy(), energy_before * (1 + 1e-9));
+}
+
+INSTANTIATE_TEST_SUITE_P(All_global_steps, Overflowing_handle,
+                         ::testing::Values(Global_step::reduced, Global_step::schur, Global_step::direct));
+
+// A sub-part deviation so small that its stiffness overflows: the factorization
+// cannot be positive definite, and the error names a part instead of
+// returning NaN positions.
+TEST(Embedding_solver, overflowing_stiffness_is_a_named_factorization_failure)
+{
+  const Learned& l = learned(Synthetic_family::hexa_grid);
+  Embedding_problem problem = make_deformation_problem(l.model);
+  problem.sigma_sub = 1e-160;
+  try
+  {
+    Embedding_solver solver(problem);
+    solver.set_handles({3}, rows(l.truth.mesh.mesh.points, {3}));
+    solver.solve();
+    FAIL() << "no error; positions finite: " << solver.positions().allFinite();
+  }
+  catch(const Computation_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("not positive definite"), std::string::npos) << e.what();
+  }
 }
 
 namespace {

@@ -148,8 +148,15 @@ public:
   /// Runs local/global iterations (Anderson-accelerated) from the current
   /// state until the energy decreases by less than `options.tolerance`
   /// (relative) or `options.max_iterations` is reached.
+  ///
+  /// Throws `Computation_error` naming the part (cluster) or handle at fault
+  /// when a factorization fails or is not positive definite, an iterate or
+  /// the energy becomes non-finite, or the energy rises (the iterations only
+  /// ever lower it, so a rise means divergence); the state is then the one
+  /// `solve()` started from.
   Solve_report solve();
   /// Runs exactly one local/global iteration; returns the energy after it.
+  /// On a `Computation_error` the positions and coordinates are unchanged.
   double iterate();
 
   /// Current vertex positions (n x 3). With `Global_step::reduced` the first
@@ -171,6 +178,7 @@ public:
   const Iteration_timings& last_iteration_timings() const;
 
 private:
+  Solve_report solve_from_current_state();
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
