@@ -17,6 +17,8 @@ namespace mpm { Command make_compare_command(); } // cmd_compare.cpp
 namespace mpm { Command make_assemble_command(); Command make_graph_command(); } // cmd_assemble.cpp
 namespace mpm { Command make_spawn_command(); } // cmd_spawn.cpp
 namespace mpm { Command make_handles_command(); } // cmd_handles.cpp
+namespace mpm { Command make_cut_command(); } // cmd_cut.cpp
+namespace mpm { Command make_correspond_command(); } // cmd_correspond.cpp
 
 namespace {
 
@@ -36,6 +38,8 @@ const std::vector<mpm::Command>& all_commands()
     mpm::make_graph_command(),
     mpm::make_assemble_command(),
     mpm::make_spawn_command(),
+    mpm::make_cut_command(),
+    mpm::make_correspond_command(),
   };
   return commands;
 }
