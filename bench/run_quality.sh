@@ -3,6 +3,7 @@
 #   doc/MPM/results/reconstruction.csv          every run of quality_reconstruction
 #   doc/MPM/results/reconstruction_summary.csv  means over the held-out poses
 #   doc/MPM/results/shape_space.csv             quality_shape_space
+#   doc/MPM/results/correspondence.csv          quality_correspondence (when built)
 #   doc/MPM/results/error_vs_handles_FAMILY.png RMS error against handle count (gnuplot)
 #   doc/MPM/Quality.md                          the tables
 # Usage: bench/run_quality.sh [BUILD_DIR]   (default: build-base; the
@@ -31,6 +32,10 @@ echo "run_quality.sh: sparse-handle reconstruction ($VERTICES vertices, $POSES p
   --csv "$RESULTS/reconstruction.csv"
 echo "run_quality.sh: shape-space quality" >&2
 "$BUILD/bench/quality_shape_space" --vertices "$VERTICES" --csv "$RESULTS/shape_space.csv"
+if [ -x "$BUILD/bench/quality_correspondence" ]; then
+  echo "run_quality.sh: dense correspondence against the synthetic truth (doc/MPM/Correspondence.md)" >&2
+  "$BUILD/bench/quality_correspondence" --vertices "$VERTICES" --csv "$RESULTS/correspondence.csv"
+fi
 
 # Summaries, gnuplot data and the markdown page.
 PLOTS=no

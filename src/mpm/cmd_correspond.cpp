@@ -174,7 +174,7 @@ Command make_correspond_command()
   c.options = {
     {"output", 'o', Value_kind::text, "OUTDIR_OR_PREFIX", "", "output directory (existing or ending in /) or prefix (required)"},
     {"labels", 0, Value_kind::text, "SEG", "MESH.seg if present, else components", "part labels of MESH"},
-    {"annotation", 0, Value_kind::text, "JSON", "MESH.json", "annotation naming the part types (required)"},
+    {"annotation", 0, Value_kind::text, "JSON", "MESH.json if present", "annotation naming the part types"},
     {"no-refine", 0, Value_kind::flag, "", "", "skip the refinement (trace(Sigma) minimization)"},
     {"refinement-iterations", 0, Value_kind::integer, "N", "40", "gradient steps of the refinement", 0, INT_MAX},
   };
