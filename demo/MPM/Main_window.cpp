@@ -27,28 +27,11 @@ namespace mpm_demo {
 
 namespace {
 
-// Slider positions to values: caricature factor -1..3 by 0.1; relative
-// symmetrization sigma 0.001..1 on a log scale; coupling weight 0..10.
-double caricature_of(int v) { return v / 10.; }
-int caricature_position(double f) { return int(std::lround(f * 10.)); }
-double symmetry_of(int v) { return std::pow(10., -3. + v / 10.); }
-int symmetry_position(double s) { return int(std::lround((std::log10(s) + 3.) * 10.)); }
-double coupling_of(int v) { return v / 4.; }
-int coupling_position(double w) { return int(std::lround(w * 4.)); }
-
 QPushButton* button(const QString& text, QWidget* parent, const std::function<void()>& action)
 {
   QPushButton* b = new QPushButton(text, parent);
   QObject::connect(b, &QPushButton::clicked, parent, action);
   return b;
-}
-
-QSlider* slider(int lo, int hi, QWidget* parent)
-{
-  QSlider* s = new QSlider(Qt::Horizontal, parent);
-  s->setRange(lo, hi);
-  s->setTracking(false); // one edit per release, not per pixel
-  return s;
 }
 
 } // namespace
@@ -103,30 +86,19 @@ Main_window::Main_window(Session& session) : session_(session)
     if(!syncing_) guarded([this, i] { session_.set_mode(Edit_mode(i)); });
   });
   form->addRow("Mode", mode_);
-  caricature_ = slider(-10, 30, edit_box);
-  caricature_label_ = new QLabel(edit_box);
-  connect(caricature_, &QSlider::valueChanged, this, [this](int v) {
-    caricature_label_->setText(QString::number(caricature_of(v), 'f', 1));
-    if(!syncing_) guarded([this, v] { session_.set_caricature_factor(caricature_of(v)); });
-  });
-  form->addRow("Caricature factor", caricature_);
-  form->addRow("", caricature_label_);
-  symmetry_ = slider(0, 30, edit_box);
-  symmetry_label_ = new QLabel(edit_box);
-  connect(symmetry_, &QSlider::valueChanged, this, [this](int v) {
-    symmetry_label_->setText(QString::number(symmetry_of(v), 'g', 2));
-    if(!syncing_) guarded([this, v] { session_.set_symmetry_sigma(symmetry_of(v)); });
-  });
-  form->addRow("Symmetrize (relative sigma)", symmetry_);
-  form->addRow("", symmetry_label_);
-  coupling_ = slider(0, 40, edit_box);
-  coupling_label_ = new QLabel(edit_box);
-  connect(coupling_, &QSlider::valueChanged, this, [this](int v) {
-    coupling_label_->setText(QString::number(coupling_of(v), 'f', 2));
-    if(!syncing_) guarded([this, v] { session_.set_coupling(coupling_of(v)); });
-  });
-  form->addRow("Coupled coordinates", coupling_);
-  form->addRow("", coupling_label_);
+  // Caricature factor -1..3 by 0.1; relative symmetrization sigma 0.001..1
+  // on a log scale; coupling weight 0..10.
+  caricature_ = add_slider(
+    form, "Caricature factor", -10, 30, [](int v) { return v / 10.; },
+    [](double f) { return int(std::lround(f * 10.)); }, 'f', 1,
+    [this](double f) { session_.set_caricature_factor(f); });
+  symmetry_ = add_slider(
+    form, "Symmetrize (relative sigma)", 0, 30, [](int v) { return std::pow(10., -3. + v / 10.); },
+    [](double s) { return int(std::lround((std::log10(s) + 3.) * 10.)); }, 'g', 2,
+    [this](double s) { session_.set_symmetry_sigma(s); });
+  coupling_ = add_slider(
+    form, "Coupled coordinates", 0, 40, [](int v) { return v / 4.; },
+    [](double w) { return int(std::lround(w * 4.)); }, 'f', 2, [this](double w) { session_.set_coupling(w); });
   arap_ = new QCheckBox("ARAP (CGAL) side by side", edit_box);
   connect(arap_, &QCheckBox::toggled, this, [this](bool on) {
     if(syncing_) return;
@@ -214,6 +186,36 @@ Main_window::Main_window(Session& session) : session_(session)
   sync_controls();
 }
 
+void Main_window::Value_slider::show(double value) const
+{
+  slider->setValue(position_of(value));
+  label->setText(QString::number(value, format, precision));
+}
+
+Main_window::Value_slider Main_window::add_slider(QFormLayout* form, const QString& name, int lo, int hi,
+                                                  std::function<double(int)> value_of,
+                                                  std::function<int(double)> position_of, char format,
+                                                  int precision, std::function<void(double)> apply)
+{
+  Value_slider s;
+  s.slider = new QSlider(Qt::Horizontal, form->parentWidget());
+  s.slider->setRange(lo, hi);
+  s.slider->setTracking(false); // one edit per release, not per pixel
+  s.label = new QLabel(form->parentWidget());
+  s.value_of = std::move(value_of);
+  s.position_of = std::move(position_of);
+  s.format = format;
+  s.precision = precision;
+  connect(s.slider, &QSlider::valueChanged, this, [this, s, apply](int v) {
+    const double value = s.value_of(v);
+    s.label->setText(QString::number(value, s.format, s.precision));
+    if(!syncing_) guarded([&apply, value] { apply(value); });
+  });
+  form->addRow(name, s.slider);
+  form->addRow("", s.label);
+  return s;
+}
+
 void Main_window::guarded(const std::function<void()>& action)
 {
   try
@@ -239,12 +241,9 @@ void Main_window::sync_controls()
   const int family = family_->findText(QString::fromStdString(session_.synthetic_family()));
   if(family >= 0) family_->setCurrentIndex(family);
   mode_->setCurrentIndex(int(session_.mode()));
-  caricature_->setValue(caricature_position(session_.caricature_factor()));
-  caricature_label_->setText(QString::number(session_.caricature_factor(), 'f', 1));
-  symmetry_->setValue(symmetry_position(session_.symmetry_sigma()));
-  symmetry_label_->setText(QString::number(session_.symmetry_sigma(), 'g', 2));
-  coupling_->setValue(coupling_position(session_.coupling()));
-  coupling_label_->setText(QString::number(session_.coupling(), 'f', 2));
+  caricature_.show(session_.caricature_factor());
+  symmetry_.show(session_.symmetry_sigma());
+  coupling_.show(session_.coupling());
   arap_->setChecked(session_.arap());
   syncing_ = false;
 }

@@ -16,6 +16,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QSlider;
 
@@ -47,12 +48,21 @@ private:
   QLabel* source_label_ = nullptr;
   QComboBox* family_ = nullptr;
   QComboBox* mode_ = nullptr;
-  QSlider* caricature_ = nullptr;
-  QLabel* caricature_label_ = nullptr;
-  QSlider* symmetry_ = nullptr;
-  QLabel* symmetry_label_ = nullptr;
-  QSlider* coupling_ = nullptr;
-  QLabel* coupling_label_ = nullptr;
+  /// A slider over a real value, with the value printed under it.
+  struct Value_slider
+  {
+    QSlider* slider = nullptr;
+    QLabel* label = nullptr;
+    std::function<double(int)> value_of;  ///< slider position -> value
+    std::function<int(double)> position_of; ///< value -> slider position
+    char format = 'f';
+    int precision = 2;
+    void show(double value) const;
+  };
+  Value_slider add_slider(QFormLayout* form, const QString& name, int lo, int hi,
+                          std::function<double(int)> value_of, std::function<int(double)> position_of, char format,
+                          int precision, std::function<void(double)> apply);
+  Value_slider caricature_, symmetry_, coupling_;
   QCheckBox* arap_ = nullptr;
   QLabel* part_label_ = nullptr;
   QLabel* solver_label_ = nullptr;

@@ -5,7 +5,6 @@
 #include <CGAL/MPM/Annotation_io.h>
 #include <CGAL/MPM/Arap_deformation.h>
 #include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
@@ -429,18 +428,16 @@ void Session::set_handles_per_part(int per_part)
   labeled.mesh = rest_;
   labeled.face_labels = face_nodes_;
   labeled.source = source_.toStdString();
-  const MPM::Handle_set h = MPM::handles_per_part(labeled, per_part, positions());
-  handle_vertices_ = h.vertices;
-  handle_groups_.resize(h.vertices.size());
-  for(std::size_t i = 0; i < handle_groups_.size(); ++i) handle_groups_[i] = int(i);
-  handle_offsets_ = h.targets;
-  for(int i = 0; i < h.size(); ++i) handle_offsets_.row(i) -= rest_.points.row(h.vertices[i]);
-  post();
+  replace_handles(MPM::handles_per_part(labeled, per_part, positions()));
 }
 
 void Session::set_handles_farthest(int count)
 {
-  const MPM::Handle_set h = MPM::farthest_point_handles(rest_, count, positions());
+  replace_handles(MPM::farthest_point_handles(rest_, count, positions()));
+}
+
+void Session::replace_handles(const MPM::Handle_set& h)
+{
   handle_vertices_ = h.vertices;
   handle_groups_.resize(h.vertices.size());
   for(std::size_t i = 0; i < handle_groups_.size(); ++i) handle_groups_[i] = int(i);

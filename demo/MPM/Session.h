@@ -10,6 +10,7 @@
 
 #include <CGAL/MPM/Assembly.h>
 #include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Morphable_part_model.h>
 
 #include <QMutex>
@@ -207,6 +208,8 @@ private:
   void rebuild();
   void set_scene(const CGAL::MPM::Indexed_mesh& rest, const CGAL::MPM::Part_graph& graph,
                  std::vector<int> face_nodes);
+  /// Handles from the library's choosers, each in its own group.
+  void replace_handles(const CGAL::MPM::Handle_set& handles);
   void post(bool restart = false);
   void on_frame(const Solve_frame& frame);
   int root() const;

@@ -121,6 +121,7 @@ public:
       try
       {
         execute(w);
+        window_.sync_controls(); // the panel shows what the script set
       }
       catch(const std::exception& e)
       {
