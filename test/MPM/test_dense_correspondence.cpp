@@ -4,6 +4,8 @@
 // Dense correspondence of same-type parts with different triangulations:
 // errors against the synthetic ground truth after independent remeshing,
 // learning from such parts, and bad input.
+#include "Tool_test_support.h"
+
 #include <CGAL/MPM/Correspondence_evaluation.h>
 #include <CGAL/MPM/Dense_correspondence.h>
 #include <CGAL/MPM/Editing.h>
@@ -12,11 +14,18 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
+#include <CGAL/MPM/Mesh_io.h>
+
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -181,6 +190,41 @@ TEST(Dense_correspondence, learns_and_deforms_remeshed_parts)
     EXPECT_LT((result.row(handles.vertices[h]) - handles.targets.row(h)).norm(), 0.05 * (rest.points.colwise().maxCoeff() - rest.points.colwise().minCoeff()).norm());
   EXPECT_LT((result - stretched).rowwise().norm().maxCoeff(),
             0.3 * (rest.points.colwise().maxCoeff() - rest.points.colwise().minCoeff()).norm());
+}
+
+TEST(Dense_correspondence, command_writes_template_connectivity_and_summary)
+{
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("mpm_correspond_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto in_dir = [&](const std::string& name) { return mpm_test::quote((dir / name).string()); };
+  ASSERT_EQ(mpm_test::run_tool(dir, "synth hand --vertices 3000 -o " + in_dir("hand")).status, 0);
+  const mpm_test::Run_result r =
+    mpm_test::run_tool(dir, "correspond " + in_dir("hand.off") + " -o " + in_dir("corr/") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json summary = nlohmann::json::parse(r.out);
+  ASSERT_EQ(summary["types"].size(), 3u);
+  for(const auto& type : summary["types"])
+  {
+    ASSERT_EQ(type["segments"].size(), 5u);
+    const Indexed_mesh first = read_mesh_file(type["segments"][0]["file"].get<std::string>()).mesh;
+    for(const auto& segment : type["segments"])
+    {
+      const Indexed_mesh m = read_mesh_file(segment["file"].get<std::string>()).mesh;
+      EXPECT_EQ(m.triangles, first.triangles);
+      EXPECT_TRUE(m.points.allFinite());
+      EXPECT_LT(segment["residual"].get<double>(), 0.05);
+    }
+    EXPECT_LE(type["after_refinement"]["trace"].get<double>(), type["before_refinement"]["trace"].get<double>());
+  }
+  EXPECT_TRUE(fs::is_regular_file(dir / "corr" / "correspondence.json"));
+  // A missing annotation file: an input error; none at all: a usage error.
+  EXPECT_EQ(mpm_test::run_tool(dir, "correspond " + in_dir("hand.off") + " --annotation " + in_dir("missing.json") +
+                                      " -o " + in_dir("x")).status, 1);
+  fs::rename(dir / "hand.json", dir / "other.json");
+  EXPECT_EQ(mpm_test::run_tool(dir, "correspond " + in_dir("hand.off") + " -o " + in_dir("x")).status, 2);
+  fs::remove_all(dir);
 }
 
 TEST(Dense_correspondence_bad_input, landmark_out_of_range_names_the_segment)
