@@ -65,16 +65,15 @@ Indexed_mesh remesh_isotropically(const Indexed_mesh& mesh, double target_edge_l
   return to_indexed_mesh(sm);
 }
 
-std::vector<double> correspondence_errors(const Indexed_mesh& truth_template, const Point_matrix& template_points,
-                                          const Indexed_mesh& truth_instance, const Point_matrix& mapped)
+Point_matrix true_corresponding_points(const Indexed_mesh& truth_template, const Point_matrix& template_points,
+                                       const Indexed_mesh& truth_instance)
 {
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
   const Mesh sm = to_surface_mesh(truth_template);
   Tree tree;
   PMP::build_AABB_tree(sm, tree);
-  const double diameter = (truth_instance.points.colwise().maxCoeff() - truth_instance.points.colwise().minCoeff()).norm();
-  std::vector<double> errors;
+  Point_matrix truth(template_points.rows(), 3);
   for(Eigen::Index v = 0; v < template_points.rows(); ++v)
   {
     const Point_3 p(template_points(v, 0), template_points(v, 1), template_points(v, 2));
@@ -82,10 +81,19 @@ std::vector<double> correspondence_errors(const Indexed_mesh& truth_template, co
     // Barycentric coordinates follow halfedge(f): source, target, next target.
     const auto h = halfedge(location.first, sm);
     const int corners[3] = {int(source(h, sm)), int(target(h, sm)), int(target(next(h, sm), sm))};
-    Eigen::RowVector3d truth = Eigen::RowVector3d::Zero();
-    for(int k = 0; k < 3; ++k) truth += location.second[k] * truth_instance.points.row(corners[k]);
-    errors.push_back((mapped.row(v) - truth).norm() / diameter);
+    truth.row(v).setZero();
+    for(int k = 0; k < 3; ++k) truth.row(v) += location.second[k] * truth_instance.points.row(corners[k]);
   }
+  return truth;
+}
+
+std::vector<double> correspondence_errors(const Indexed_mesh& truth_template, const Point_matrix& template_points,
+                                          const Indexed_mesh& truth_instance, const Point_matrix& mapped)
+{
+  const Point_matrix truth = true_corresponding_points(truth_template, template_points, truth_instance);
+  const double diameter = (truth_instance.points.colwise().maxCoeff() - truth_instance.points.colwise().minCoeff()).norm();
+  std::vector<double> errors;
+  for(Eigen::Index v = 0; v < mapped.rows(); ++v) errors.push_back((mapped.row(v) - truth.row(v)).norm() / diameter);
   return errors;
 }
 

@@ -20,6 +20,15 @@ namespace MPM {
 Indexed_mesh remesh_isotropically(const Indexed_mesh& mesh, double target_edge_length, int iterations = 3);
 
 /// \ingroup PkgMPMRef
+/// The true corresponding point on `truth_instance` of each template point:
+/// the point is located (closest point, barycentric coordinates) on
+/// `truth_template`, its image has the same barycentric coordinates in the
+/// same face of `truth_instance`, which shares `truth_template`'s
+/// connectivity.
+Point_matrix true_corresponding_points(const Indexed_mesh& truth_template, const Point_matrix& template_points,
+                                       const Indexed_mesh& truth_instance);
+
+/// \ingroup PkgMPMRef
 /// Distance of each template vertex's mapped point to its true
 /// corresponding point, over the bounding-box diagonal of `truth_instance`.
 /// The template vertex is located (closest point, barycentric coordinates)
