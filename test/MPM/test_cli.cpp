@@ -3,6 +3,8 @@
 //
 // Runs the built `mpm` tool (MPM_TOOL_PATH) in a temporary directory and
 // checks its files, JSON summaries, messages and exit codes.
+#include "Tool_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -17,7 +19,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -25,35 +26,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct Run_result
-{
-  int status = -1; // exit code, or -1 when the tool did not exit normally
-  std::string out, err;
-
-  std::vector<std::string> err_lines() const
-  {
-    std::vector<std::string> lines;
-    std::istringstream in(err);
-    for(std::string l; std::getline(in, l);)
-      if(!l.empty()) lines.push_back(l);
-    return lines;
-  }
-};
-
-std::string slurp(const fs::path& p)
-{
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s)
-{
-  std::string r = "'";
-  for(char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return r + "'";
-}
+using mpm_test::quote;
+using mpm_test::Run_result;
+using mpm_test::slurp;
 
 class Cli : public ::testing::Test
 {
@@ -74,18 +49,7 @@ protected:
   }
 
   // Runs `mpm ARGS` (ARGS already shell-quoted where needed).
-  Run_result run(const std::string& arguments) const
-  {
-    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string command = quote(MPM_TOOL_PATH) + " " + arguments + " >" + quote(out.string()) + " 2>" +
-                                quote(err.string()) + " </dev/null";
-    const int raw = std::system(command.c_str());
-    Run_result r;
-    r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
+  Run_result run(const std::string& arguments) const { return mpm_test::run_tool(dir, arguments); }
 
   std::string path(const std::string& name) const { return (dir / name).string(); }
 

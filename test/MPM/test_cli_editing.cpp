@@ -6,6 +6,8 @@
 // meshes they write, their JSON summaries and their errors.
 #include <CGAL/MPM/Mesh_io.h>
 
+#include "Tool_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -21,7 +23,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -30,26 +31,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using CGAL::MPM::Point_matrix;
 
-struct Run_result
-{
-  int status = -1; // exit code, or -1 when the tool did not exit normally
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p)
-{
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s)
-{
-  std::string r = "'";
-  for(char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return r + "'";
-}
+using mpm_test::quote;
+using mpm_test::Run_result;
+using mpm_test::slurp;
 
 double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 
@@ -68,15 +52,7 @@ protected:
 
   static Run_result run_in(const fs::path& where, const std::string& arguments)
   {
-    const fs::path out = where / "stdout.txt", err = where / "stderr.txt";
-    const std::string command = quote(MPM_TOOL_PATH) + " " + arguments + " >" + quote(out.string()) + " 2>" +
-                                quote(err.string()) + " </dev/null";
-    const int raw = std::system(command.c_str());
-    Run_result r;
-    r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
+    return mpm_test::run_tool(where, arguments);
   }
 
   static void SetUpTestSuite()

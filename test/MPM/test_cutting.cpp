@@ -11,6 +11,7 @@
 #include <CGAL/MPM/Synthetic_model.h>
 
 #include "Io_test_support.h"
+#include "Tool_test_support.h"
 #include "Learned_models.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +26,6 @@
 #include <set>
 #include <utility>
 
-#include <sys/wait.h>
 
 namespace {
 
@@ -357,16 +357,6 @@ TEST(Mesh_cutting, CutFileFormat)
   MPM_EXPECT_INPUT_ERROR(read_cut_specification("/nonexistent/c.json"), "/nonexistent/c.json");
 }
 
-int run_tool(const std::string& arguments, const mpm_test::Scratch_directory& dir, std::string* out = nullptr,
-             std::string* err = nullptr)
-{
-  const std::string o = dir.file("stdout.txt"), e = dir.file("stderr.txt");
-  const int raw = std::system((std::string(MPM_TOOL_PATH) + " " + arguments + " >" + o + " 2>" + e).c_str());
-  if(out) *out = mpm_test::read_bytes(o);
-  if(err) *err = mpm_test::read_bytes(e);
-  return raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
 TEST(Mesh_cutting, CommandWritesWhatLearnReads)
 {
   const mpm_test::Scratch_directory dir;
@@ -379,13 +369,10 @@ TEST(Mesh_cutting, CommandWritesWhatLearnReads)
   mpm_test::write_bytes(dir.file("hand.cuts.json"),
                         nlohmann::json({{"format", "cgal-mpm-cuts"}, {"cuts", cuts}, {"parts", parts}}).dump());
 
-  std::string out, err;
-  ASSERT_EQ(run_tool("cut " + dir.file("hand.off") + " --cuts " + dir.file("hand.cuts.json") + " -o " +
-                       dir.file("out/cut") + " --json",
-                     dir, &out, &err),
-            0)
-    << err;
-  const nlohmann::json summary = nlohmann::json::parse(out);
+  const mpm_test::Run_result cut = mpm_test::run_tool(
+    dir.path(), "cut " + dir.file("hand.off") + " --cuts " + dir.file("hand.cuts.json") + " -o " + dir.file("out/cut") + " --json");
+  ASSERT_EQ(cut.status, 0) << cut.err;
+  const nlohmann::json summary = nlohmann::json::parse(cut.out);
   EXPECT_EQ(summary["parts"].size(), 16u);
   EXPECT_EQ(summary["cuts"].size(), 15u);
   const Labeled_mesh written = read_labeled_mesh(dir.file("out/cut.off"), dir.file("out/cut.seg"));
@@ -399,14 +386,14 @@ TEST(Mesh_cutting, CommandWritesWhatLearnReads)
   // A quad would be split by the reader, changing what is written: refused.
   mpm_test::write_bytes(dir.file("quad.off"), "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n4 0 1 2 3\n3 0 1 4\n");
   mpm_test::write_bytes(dir.file("quad.cuts.json"), R"({"cuts": [{"vertices": [0, 2]}]})");
-  EXPECT_EQ(run_tool("cut " + dir.file("quad.off") + " --cuts " + dir.file("quad.cuts.json") + " -o " +
-                       dir.file("quad_out"),
-                     dir, &out, &err),
-            1);
-  if(!err.empty() && err.back() == '\n') err.pop_back();
-  EXPECT_TRUE(mpm_test::contains_all(err, {"quad.off", "face 0", "has 4 corners", "triangle mesh"})) << err;
+  const mpm_test::Run_result quad = mpm_test::run_tool(
+    dir.path(), "cut " + dir.file("quad.off") + " --cuts " + dir.file("quad.cuts.json") + " -o " + dir.file("quad_out"));
+  EXPECT_EQ(quad.status, 1);
+  ASSERT_EQ(quad.err_lines().size(), 1u) << quad.err;
+  EXPECT_TRUE(mpm_test::contains_all(quad.err_lines()[0], {"quad.off", "face 0", "has 4 corners", "triangle mesh"}))
+    << quad.err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("quad_out.seg")));
-  EXPECT_EQ(run_tool("cut " + dir.file("hand.off") + " -o " + dir.file("x"), dir, &out, &err), 2);
+  EXPECT_EQ(mpm_test::run_tool(dir.path(), "cut " + dir.file("hand.off") + " -o " + dir.file("x")).status, 2);
 }
 
 } // namespace

@@ -18,14 +18,27 @@ using mpm_test::input_error_message;
 
 namespace {
 
-// fuzz_mesh_io input: byte 0 chooses the extension (bits 0-1) and the labels
-// (bits 2-3), the rest is the mesh file (then `#SEG\n` and a .seg file).
-std::string mesh_file_of(const unsigned char* data, std::size_t size, std::string& extension)
+// A fuzz_mesh_io input written out as the target writes it: byte 0 chooses
+// the extension (bits 0-1) and the labels (bits 2-3; 0 is a .seg file), the
+// rest is the mesh file up to `#SEG\n`, then the .seg file.
+struct Mesh_fuzz_case
 {
-  static const char* const extensions[4] = {".off", ".obj", ".ply", ".stl"};
-  extension = extensions[data[0] & 3];
-  return std::string(reinterpret_cast<const char*>(data + 1), size - 1);
-}
+  Scratch_directory dir;
+  std::string extension, bytes, path, seg;
+
+  Mesh_fuzz_case(const unsigned char* data, std::size_t size)
+  {
+    static const char* const extensions[4] = {".off", ".obj", ".ply", ".stl"};
+    extension = extensions[data[0] & 3];
+    bytes.assign(reinterpret_cast<const char*>(data + 1), size - 1);
+    path = dir.file("in" + extension);
+    const std::size_t separator = bytes.find("#SEG\n");
+    mpm_test::write_bytes(path, bytes.substr(0, separator));
+    if(((data[0] >> 2) & 3) != 0) return;
+    seg = dir.file("in.seg");
+    mpm_test::write_bytes(seg, separator == std::string::npos ? std::string() : bytes.substr(separator + 5));
+  }
+};
 
 } // namespace
 
@@ -52,17 +65,13 @@ TEST(Fuzz_regressions, ply_property_before_any_element)
   0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x03, 0x00,
   0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00,
   };
-  std::string extension;
-  const std::string bytes = mesh_file_of(input, sizeof input, extension);
-  ASSERT_EQ(extension, ".ply");
-  Scratch_directory dir;
-  const std::string path = dir.file("in" + extension);
-  mpm_test::write_bytes(path, bytes);
-  const std::string message = input_error_message([&] { read_mesh_file(path); });
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".ply");
+  const std::string message = input_error_message([&] { read_mesh_file(fuzz.path); });
   EXPECT_NE(message.find("property declared before any element"), std::string::npos) << message;
   EXPECT_NE(message.find("header line 4"), std::string::npos) << message;
   // The same through read_labeled_mesh() with labels from a face property.
-  EXPECT_NE(input_error_message([&] { read_labeled_mesh(path, "property:label"); }).find(path),
+  EXPECT_NE(input_error_message([&] { read_labeled_mesh(fuzz.path, "property:label"); }).find(fuzz.path),
             std::string::npos);
 }
 
@@ -108,14 +117,10 @@ TEST(Fuzz_regressions, ply_negative_element_count)
     0x33, 0x20, 0x30, 0x20, 0x31, 0x20, 0x32, 0x20, 0x30, 0x0a, 0x33, 0x20, 0x31, 0x20, 0x33, 0x20,
     0x32, 0x20, 0x31, 0x0a,
   };
-  std::string extension;
-  const std::string bytes = mesh_file_of(input, sizeof input, extension);
-  ASSERT_EQ(extension, ".ply");
-  Scratch_directory dir;
-  const std::string path = dir.file("in" + extension);
-  mpm_test::write_bytes(path, bytes);
-  const std::string message = input_error_message([&] { read_labeled_mesh(path, "property:label"); });
-  EXPECT_EQ(message, path + ": header line 3: element \"vertex\" has a negative count \"-4\"");
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".ply");
+  const std::string message = input_error_message([&] { read_labeled_mesh(fuzz.path, "property:label"); });
+  EXPECT_EQ(message, fuzz.path + ": header line 3: element \"vertex\" has a negative count \"-4\"");
 }
 
 // A count larger than the file can hold is refused before CGAL reads it.
@@ -148,17 +153,11 @@ TEST(Fuzz_regressions, off_face_corner_count_beyond_size_t)
     0x20, 0x31, 0x0a, 0x30, 0x20, 0x33, 0x20, 0xaf, 0x32, 0x0a, 0x23, 0x53, 0x45, 0x47, 0x0a, 0x30,
     0x0a, 0x31, 0x0a,
   };
-  std::string extension;
-  const std::string all = mesh_file_of(input, sizeof input, extension);
-  ASSERT_EQ(extension, ".off");
-  const std::size_t separator = all.find("#SEG\n");
-  ASSERT_NE(separator, std::string::npos);
-  Scratch_directory dir;
-  const std::string path = dir.file("in" + extension), seg = dir.file("in.seg");
-  mpm_test::write_bytes(path, all.substr(0, separator));
-  mpm_test::write_bytes(seg, all.substr(separator + 5));
-  EXPECT_EQ(input_error_message([&] { read_labeled_mesh(path, seg); }),
-            path + ": face 0: line 7: corner count \"307777777777777777777777...\" is not a non-negative integer");
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  ASSERT_FALSE(fuzz.seg.empty());
+  EXPECT_EQ(input_error_message([&] { read_labeled_mesh(fuzz.path, fuzz.seg); }),
+            fuzz.path + ": face 0: line 7: corner count \"307777777777777777777777...\" is not a non-negative integer");
 }
 
 TEST(Fuzz_regressions, off_negative_face_corner_count)
@@ -190,21 +189,15 @@ TEST(Fuzz_regressions, off_face_vertex_index_beyond_size_t)
     0x20, 0x3a, 0x1b, 0x0a, 0x33, 0x20, 0x71, 0x20, 0x33, 0x20, 0x32, 0x0a, 0x23, 0x53, 0x45, 0x47,
     0x30, 0x0a, 0x65, 0x46, 0x0a, 0x0a,
   };
-  std::string extension;
-  const std::string all = mesh_file_of(input, sizeof input, extension);
-  ASSERT_EQ(extension, ".off");
-  const std::size_t separator = all.find("#SEG\n");
-  ASSERT_NE(separator, std::string::npos);
-  Scratch_directory dir;
-  const std::string path = dir.file("in" + extension), seg = dir.file("in.seg");
-  mpm_test::write_bytes(path, all.substr(0, separator));
-  mpm_test::write_bytes(seg, all.substr(separator + 5));
-  EXPECT_EQ(input_error_message([&] { read_labeled_mesh(path, seg); }),
-            path + ": face 1: line 8: vertex index \"444444444444444444444444...\" is out of range");
-  // A negative index takes the same path.
-  mpm_test::write_bytes(path, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -2 1\n");
-  EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
-            path + ": face 0: line 6: vertex index \"-2\" is out of range");
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  ASSERT_FALSE(fuzz.seg.empty());
+  EXPECT_EQ(input_error_message([&] { read_labeled_mesh(fuzz.path, fuzz.seg); }),
+            fuzz.path + ": face 1: line 8: vertex index \"444444444444444444444444...\" is out of range");
+  // A negative index takes the same fuzz.path.
+  mpm_test::write_bytes(fuzz.path, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -2 1\n");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": face 0: line 6: vertex index \"-2\" is out of range");
 }
 
 // fuzz_mesh_io-oom-54978b8c045c67f92571e2562927d16070a19ac3 (mode 0x00: .off with a .seg file).
@@ -218,19 +211,15 @@ TEST(Fuzz_regressions, off_keyword_ended_by_punctuation_with_huge_face_count)
     0x34, 0x38, 0x30, 0x20, 0x30, 0x0a, 0x65, 0x46, 0x20, 0x30, 0x20, 0x30, 0x20, 0x30, 0x30, 0x20,
     0x30, 0x0a, 0x0a,
   };
-  std::string extension;
-  const std::string bytes = mesh_file_of(input, sizeof input, extension);
-  ASSERT_EQ(extension, ".off");
-  Scratch_directory dir;
-  const std::string path = dir.file("in" + extension);
-  mpm_test::write_bytes(path, bytes);
-  EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
-            path + ": header: announces 4 vertices and 701006480 faces, more than a file of " +
-              std::to_string(bytes.size()) + " bytes can hold (truncated or corrupt)");
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": header: announces 4 vertices and 701006480 faces, more than a file of " +
+              std::to_string(fuzz.bytes.size()) + " bytes can hold (truncated or corrupt)");
   // The counts may also follow the punctuation directly, and a valid file so
   // written still reads.
-  mpm_test::write_bytes(path, "OFF/3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-  EXPECT_EQ(read_mesh_file(path).mesh.number_of_faces(), 1);
+  mpm_test::write_bytes(fuzz.path, "OFF/3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(read_mesh_file(fuzz.path).mesh.number_of_faces(), 1);
 }
 
 // fuzz_mesh_io-crash-9b7837b29a1780bc0aaaef1764b53de9a21f7475 (mode 0x0a:
@@ -258,14 +247,10 @@ TEST(Fuzz_regressions, ply_integer_vertex_coordinate)
     0x0a, 0x33, 0x20, 0x30, 0x20, 0x31, 0x20, 0x32, 0x20, 0x30, 0x0a, 0x33, 0x20, 0x31, 0x20, 0x33,
     0x20, 0x32, 0x20, 0x31, 0x0a,
   };
-  std::string extension;
-  const std::string bytes = mesh_file_of(input, sizeof input, extension);
-  ASSERT_EQ(extension, ".ply");
-  Scratch_directory dir;
-  const std::string path = dir.file("in" + extension);
-  mpm_test::write_bytes(path, bytes);
-  EXPECT_EQ(input_error_message([&] { read_labeled_mesh(path, "property:label"); }),
-            path + ": header line 4: vertex coordinate \"x\" has type \"int32\" (supported: float, double)");
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".ply");
+  EXPECT_EQ(input_error_message([&] { read_labeled_mesh(fuzz.path, "property:label"); }),
+            fuzz.path + ": header line 4: vertex coordinate \"x\" has type \"int32\" (supported: float, double)");
 }
 
 // fuzz_mesh_io-crash-a2e572c69dd1b96f57360654eebadcd6670b2f4a (mode 0x0e:
@@ -324,12 +309,8 @@ TEST(Fuzz_regressions, ply_negative_list_size)
     0x20, 0x36, 0x30, 0x8e, 0x86, 0xa0, 0xff, 0xfe, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00,
     0x2f, 0x26,
   };
-  std::string extension;
-  const std::string bytes = mesh_file_of(input, sizeof input, extension);
-  ASSERT_EQ(extension, ".ply");
-  Scratch_directory dir;
-  const std::string path = dir.file("in" + extension);
-  mpm_test::write_bytes(path, bytes);
-  const std::string message = input_error_message([&] { read_mesh_file(path); });
-  EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".ply");
+  const std::string message = input_error_message([&] { read_mesh_file(fuzz.path); });
+  EXPECT_EQ(message.rfind(fuzz.path + ": ", 0), 0u) << message;
 }
