@@ -274,8 +274,11 @@ Point_matrix instance_points(const Part_instance& part, const Indexed_mesh& mesh
 
 // Boundary dockings: parts whose faces share an edge. Generalized dockings:
 // parts of different connected components within the docking radius.
+// With `corresponded`, a part rebuilt by dense correspondence (detached
+// from the neighbours it shared seams with) docks only to those.
 std::vector<Observation> find_dockings(const std::vector<Training_input>& inputs,
-                                       const std::vector<Part_instance>& parts, double radius)
+                                       const std::vector<Part_instance>& parts, double radius,
+                                       const Corresponded_training* corresponded)
 {
   std::vector<Observation> observations;
   for(std::size_t e = 0; e < inputs.size(); ++e)
@@ -350,6 +353,19 @@ std::vector<Observation> find_dockings(const std::vector<Training_input>& inputs
       const std::set<int>& b = components_of_part[q];
       return std::any_of(a.begin(), a.end(), [&](int c) { return b.count(c) > 0; });
     };
+    std::set<int> seamed; // labels with a seam before the rebuild
+    if(corresponded)
+      for(const auto& [a, b] : corresponded->seams[e])
+      {
+        seamed.insert(a);
+        seamed.insert(b);
+      }
+    const auto may_dock = [&](int p, int q) {
+      if(!corresponded) return true;
+      const int a = parts[p].label, b = parts[q].label;
+      const auto bound = [&](int l) { return corresponded->detached[e].count(l) > 0 && seamed.count(l) > 0; };
+      return !(bound(a) || bound(b)) || corresponded->seams[e].count({std::min(a, b), std::max(a, b)}) > 0;
+    };
     std::set<int> all_components;
     for(const auto& [p, comps] : components_of_part) all_components.insert(comps.begin(), comps.end());
     if(all_components.size() < 2) continue;
@@ -375,7 +391,7 @@ std::vector<Observation> find_dockings(const std::vector<Training_input>& inputs
       for(int w : found)
         for(int p : parts_of_vertex[v])
           for(int q : parts_of_vertex[w])
-            if(p < q && !share_component(p, q))
+            if(p < q && !share_component(p, q) && may_dock(p, q))
             {
               auto& entry = near[{p, q}];
               entry.first.insert(local(p, v));
@@ -457,8 +473,10 @@ void add_virtual_edges(const Point_matrix& from, const std::vector<int>& from_po
   }
 }
 
-// The learner proper, on inputs whose same-type parts share connectivity.
-Morphable_part_model learn_corresponded(const std::vector<Training_input>& inputs, const Learning_options& options)
+// The learner proper, on inputs whose same-type parts share connectivity
+// (`corresponded`: how they were made so, or null).
+Morphable_part_model learn_corresponded(const std::vector<Training_input>& inputs, const Learning_options& options,
+                                        const Corresponded_training* corresponded)
 {
   const auto progress = [&](const std::string& stage, double fraction) {
     if(options.progress) options.progress(stage, fraction);
@@ -482,7 +500,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
   }
 
   progress("dockings", 0.1);
-  std::vector<Observation> observations = find_dockings(inputs, parts, parameters.docking_radius);
+  std::vector<Observation> observations = find_dockings(inputs, parts, parameters.docking_radius, corresponded);
   for(Observation& o : observations)
   {
     o.ref_a = {parts[o.a].type, find_or_add_site(model.types[parts[o.a].type], o.kind, o.site_a)};
@@ -724,6 +742,19 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
 {
   Corresponded_training result;
   result.inputs = inputs;
+  result.seams.resize(inputs.size());
+  result.detached.resize(inputs.size());
+  for(std::size_t e = 0; e < inputs.size(); ++e)
+  {
+    // Label pairs meeting at a vertex: the seams.
+    const Labeled_mesh& lm = inputs[e].mesh;
+    std::vector<std::set<int>> labels_of_vertex(lm.mesh.number_of_vertices());
+    for(int f = 0; f < lm.mesh.number_of_faces(); ++f)
+      for(int v : lm.mesh.triangles[f]) labels_of_vertex[v].insert(lm.face_labels[f]);
+    for(const std::set<int>& labels : labels_of_vertex)
+      for(auto a = labels.begin(); a != labels.end(); ++a)
+        for(auto b = std::next(a); b != labels.end(); ++b) result.seams[e].insert({*a, *b});
+  }
   // Segments of each annotated type, and the type index that tags seams.
   struct Segment_ref
   {
@@ -812,6 +843,7 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
     for(std::size_t i = 0; i < refs.size(); ++i)
     {
       replaced[refs[i].example][refs[i].label] = c.segments[i].positions;
+      result.detached[refs[i].example].insert(refs[i].label);
       replaced_triangles[refs[i].example][refs[i].label] = &c.triangles;
       // Landmark k of every segment is the template's landmark vertex k.
       replaced_landmarks[refs[i].example][refs[i].label] = segments.front().landmarks;
@@ -886,7 +918,8 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
   if(inputs.empty()) throw Input_error("", "", "no training mesh given");
   for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
   const Corresponded_training corresponded = correspond_training_inputs(inputs, options);
-  return learn_corresponded(corresponded.types.empty() ? inputs : corresponded.inputs, options);
+  return corresponded.types.empty() ? learn_corresponded(inputs, options, nullptr)
+                                    : learn_corresponded(corresponded.inputs, options, &corresponded);
 }
 
 Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const Annotation& annotation,

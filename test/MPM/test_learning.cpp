@@ -206,6 +206,15 @@ TEST(Learning, corresponds_instances_with_different_connectivity)
   for(const Part_node& node : model.examples[0].graph.nodes)
     EXPECT_EQ(static_cast<int>(node.vertices.size()), model.types[0].number_of_vertices);
   EXPECT_TRUE(model.examples[0].mesh.points.allFinite());
+  // The rebuilt tiles no longer share seam vertices: they dock (generalized)
+  // to their former seam neighbours only, never to the tile after next.
+  const Part_graph& graph = model.examples[0].graph;
+  EXPECT_EQ(graph.edges.size(), 2u);
+  for(const Part_edge& e : graph.edges)
+  {
+    EXPECT_EQ(model.rules[e.rule].kind, Docking_kind::generalized);
+    EXPECT_EQ(std::abs(graph.nodes[e.first].label - graph.nodes[e.second].label), 1);
+  }
 }
 
 TEST(Learning, rejects_annotated_type_without_instance)

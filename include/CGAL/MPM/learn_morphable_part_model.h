@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,12 @@ struct Corresponded_training
   /// Per corresponded type: (input, label) of each segment, in the order of
   /// `Dense_correspondence::segments`.
   std::map<std::string, std::vector<std::pair<int, int>>> segments;
+  /// Per input: the label pairs that shared a seam (a vertex) before the
+  /// rebuild. A rebuilt part that had seams docks (generalized docking)
+  /// only to its seam neighbours, not to whatever else is near.
+  std::vector<std::set<std::pair<int, int>>> seams;
+  /// Per input: the labels of the rebuilt parts.
+  std::vector<std::set<int>> detached;
 };
 
 /// \ingroup PkgMPMRef
