@@ -248,15 +248,18 @@ Vec3 tilt_point(const Loop& l, const Vec3& axis_point, int orientation)
   return l.centroid + radius * std::min(1., lean.norm() / 0.1) * lean.normalized();
 }
 
-// Vertex farthest along the mesh from the boundary loops: a fingertip.
-int extremity_of(const Surface& s)
+// The tip of a segment with one loop (a fingertip): the vertex farthest
+// along the axis from the loop's centroid towards the area centroid. On a
+// round cap this is better defined than the vertex geodesically farthest
+// from a tilted seam.
+int pole_of(const Surface& s)
 {
-  std::vector<int> sources;
-  for(const Loop& l : s.loops) sources.insert(sources.end(), l.vertices.begin(), l.vertices.end());
-  const std::vector<double> d = internal::edge_graph_distances(s.mesh.points, internal::mesh_edges(s.mesh.triangles), sources);
+  const Vec3 c = s.loops[0].centroid;
+  const Vec3 axis = (s.area_centroid - c).normalized();
   int best = 0;
-  for(std::size_t v = 0; v < d.size(); ++v)
-    if(std::isfinite(d[v]) && (!std::isfinite(d[best]) || d[v] > d[best])) best = static_cast<int>(v);
+  for(Eigen::Index v = 0; v < s.mesh.points.rows(); ++v)
+    if((s.mesh.points.row(v).transpose() - c).dot(axis) > (s.mesh.points.row(best).transpose() - c).dot(axis))
+      best = static_cast<int>(v);
   return best;
 }
 
@@ -351,8 +354,8 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
   int extremity_t = -1, extremity_s = -1;
   if(loops == 1)
   {
-    extremity_t = extremity_of(t);
-    extremity_s = extremity_of(s);
+    extremity_t = pole_of(t);
+    extremity_s = pole_of(s);
   }
   const int extremity_weight = std::max(1, samples / 4);
 

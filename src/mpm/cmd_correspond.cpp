@@ -163,7 +163,7 @@ Command make_correspond_command()
   c.description =
     "Every part type of the annotation with two or more segments gets its first\n"
     "segment's connectivity on all of them (automatic landmarks from the seams and\n"
-    "extremities, the annotation's landmarks first; deformable ICP; refinement of\n"
+    "tips, the annotation's landmarks first; deformable ICP; refinement of\n"
     "trace(Sigma); see doc/MPM/Correspondence.md). Writes one OFF per segment\n"
     "(OUTDIR/TYPE_K.off or PREFIX_TYPE_K.off, K in label order) and a JSON summary\n"
     "(OUTDIR/correspondence.json or PREFIX.json): per type the ICP iterations,\n"

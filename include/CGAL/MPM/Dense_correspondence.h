@@ -104,8 +104,8 @@ std::vector<std::vector<int>> boundary_loops(const Indexed_mesh& mesh);
 /// one part type: segments are added most-deviating first (bounding-box
 /// diagonal), aligned rigidly by landmarks (the user's, or automatic ones:
 /// arc-length samples of the matched boundary loops with the best cyclic
-/// shift and orientation, the lean of each seam's plane, and the geodesic
-/// extremity of segments with one loop), then fitted by deformable ICP with a coarse
+/// shift and orientation, the lean of each seam's plane, and the tip of
+/// segments with one loop), then fitted by deformable ICP with a coarse
 /// thin-plate-spline (later: the PCA space of the segments done) and a
 /// Laplacian regularizer, and finally refined by minimizing
 /// `E_boundary + E_sample + trace(Sigma)` with tangent steps projected back
