@@ -322,7 +322,7 @@ constexpr double rotation_preference = 1.;
 // segment: the loops fix the twist of a tube only up to its symmetry, the
 // surface decides the rest.
 Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<int>& user_t,
-                          const std::vector<int>& user_s, int samples)
+                          const std::vector<int>& user_s, int samples, bool use_tilt)
 {
   const int loops = static_cast<int>(t.loops.size());
   const Point_matrix user_source = rows_of(t.mesh.points, user_t), user_target = rows_of(s.mesh.points, user_s);
@@ -348,6 +348,7 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     Rigid_motion motion;
     double residual = 0.;
     double score = -1.;
+    bool tilt = false;
   };
   std::vector<Candidate> candidates;
 
@@ -385,8 +386,12 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
   // Loop 0 of the template on loop permutation[0] at `offset`: rigid motion
   // from it and the other loops' centroids, then the other loops' best
   // shifts (at `resolution` per turn) under that motion, then the motion of all.
-  const auto loop_candidate = [&](const std::vector<int>& permutation, int orientation, double offset, int resolution) {
+  // With `tilt`, the seams' lean joins the fit; the residual that ranks
+  // candidates leaves it out.
+  const auto loop_candidate = [&](const std::vector<int>& permutation, int orientation, double offset, int resolution,
+                                  bool tilt) {
     Candidate c;
+    c.tilt = tilt;
     c.loops.assign(loops, Loop_match());
     c.loops[0] = {permutation[0], orientation, offset};
     std::vector<Point_matrix> src{template_samples[0]},
@@ -396,8 +401,8 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
       src.push_back(repeated(t.loops[l].centroid, samples));
       tgt.push_back(repeated(s.loops[permutation[l]].centroid, samples));
     }
-    std::vector<Point_matrix> extra_src, extra_tgt;
-    add_tilt(c.loops[0], 0, permutation, extra_src, extra_tgt);
+    std::vector<Point_matrix> extra_src, extra_tgt, tilt_src, tilt_tgt;
+    if(tilt) add_tilt(c.loops[0], 0, permutation, tilt_src, tilt_tgt);
     if(extremity_t >= 0)
     {
       extra_src.push_back(repeated(t.mesh.points.row(extremity_t).transpose(), extremity_weight));
@@ -407,6 +412,8 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     extra_tgt.insert(extra_tgt.end(), user_tgt_w.begin(), user_tgt_w.end());
     src.insert(src.end(), extra_src.begin(), extra_src.end());
     tgt.insert(tgt.end(), extra_tgt.begin(), extra_tgt.end());
+    src.insert(src.end(), tilt_src.begin(), tilt_src.end());
+    tgt.insert(tgt.end(), tilt_tgt.begin(), tilt_tgt.end());
     const Rigid_motion first = fit_rigid_motion(stack(src), stack(tgt));
     for(int l = 1; l < loops; ++l)
     {
@@ -431,10 +438,15 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     }
     all_src.insert(all_src.end(), extra_src.begin(), extra_src.end());
     all_tgt.insert(all_tgt.end(), extra_tgt.begin(), extra_tgt.end());
-    for(int l = 1; l < loops; ++l) add_tilt(c.loops[l], l, permutation, all_src, all_tgt);
+    const Eigen::Index ranked = stack(all_src).rows();
+    if(tilt)
+      for(int l = 1; l < loops; ++l) add_tilt(c.loops[l], l, permutation, tilt_src, tilt_tgt);
+    all_src.insert(all_src.end(), tilt_src.begin(), tilt_src.end());
+    all_tgt.insert(all_tgt.end(), tilt_tgt.begin(), tilt_tgt.end());
     c.source = stack(all_src);
     c.target = stack(all_tgt);
     finish(c);
+    c.residual = rms(c.motion.apply(c.source.topRows(ranked)), c.target.topRows(ranked));
     return c;
   };
   const auto score = [&](Candidate& c) {
@@ -494,7 +506,7 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
       if(any_agrees && !tags_agree(t, s, permutation)) continue;
       for(int orientation : {1, -1})
         for(int shift = 0; shift < samples; ++shift)
-          candidates.push_back(loop_candidate(permutation, orientation, double(shift) / samples, samples));
+          candidates.push_back(loop_candidate(permutation, orientation, double(shift) / samples, samples, use_tilt));
     } while(all_orders && std::next_permutation(permutation.begin(), permutation.end()));
   }
 
@@ -514,7 +526,7 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     const Loop_match first = chosen.loops[0];
     for(int k = -3; k <= 3; ++k)
     {
-      Candidate c = loop_candidate(matched, first.orientation, first.offset + k / (4. * samples), 4 * samples);
+      Candidate c = loop_candidate(matched, first.orientation, first.offset + k / (4. * samples), 4 * samples, chosen.tilt);
       if(score(c) < score(chosen)) chosen = c;
     }
   }
@@ -1015,30 +1027,44 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
     const Surface& s = *surfaces[i];
     Segment_correspondence& r = result.segments[i];
     r.order = static_cast<int>(rank);
-    landmarks[i] = match_landmarks(t, s, segments[0].landmarks, segments[i].landmarks, options.loop_samples);
-    const Landmarks& lm = landmarks[i];
-    r.automatic_landmarks = lm.automatic;
-    const Point_matrix base = lm.motion.apply(t.mesh.points);
-    Point_matrix coarse;
-    if(options.segments_before_pca > 0 && int(rank) > options.segments_before_pca)
+    // The lean of a lone seam is a cue at a mitred joint but arbitrary at a
+    // hand-made cut: with one loop, both are tried and the one covering the
+    // segment better wins (the lean on near ties: within a quarter).
+    double residual_with_lean = 0.;
+    for(bool use_tilt : {true, false})
     {
-      std::vector<Point_matrix> instances;
-      for(std::size_t k = 0; k < rank; ++k) instances.push_back(positions[order[k]]);
-      Shape_space_options so;
-      so.explained_variance = 1.;
-      const Shape_space space = learn_shape_space(instances, so);
-      const Point_matrix start =
-        base + fit_spline(lm.motion.apply(lm.source), lm.target - lm.motion.apply(lm.source), s.diagonal).displacement(base);
-      coarse = shape_space_icp(s, info, lm, space, start, options, r.iterations);
-      r.used_shape_space = true;
+      if(!use_tilt && t.loops.size() != 1) break;
+      Segment_correspondence trial = r;
+      const Landmarks lm = match_landmarks(t, s, segments[0].landmarks, segments[i].landmarks, options.loop_samples, use_tilt);
+      trial.automatic_landmarks = lm.automatic;
+      const Point_matrix base = lm.motion.apply(t.mesh.points);
+      Point_matrix coarse;
+      if(options.segments_before_pca > 0 && int(rank) > options.segments_before_pca)
+      {
+        std::vector<Point_matrix> instances;
+        for(std::size_t k = 0; k < rank; ++k) instances.push_back(positions[order[k]]);
+        Shape_space_options so;
+        so.explained_variance = 1.;
+        const Shape_space space = learn_shape_space(instances, so);
+        const Point_matrix start =
+          base + fit_spline(lm.motion.apply(lm.source), lm.target - lm.motion.apply(lm.source), s.diagonal).displacement(base);
+        coarse = shape_space_icp(s, info, lm, space, start, options, trial.iterations);
+        trial.used_shape_space = true;
+      }
+      else
+        coarse = spline_icp(s, info, lm, base, options, trial.iterations);
+      Point_matrix y = laplacian_icp(s, info, lm, coarse, options, trial.iterations);
+      std::vector<Vec3> frame;
+      project(s, info, lm, y, frame);
+      for(const auto& [v, p] : lm.vertex_targets) y.row(v) = p.transpose();
+      const double residual = coverage_residual(s, y, t.mesh.triangles);
+      if(use_tilt) residual_with_lean = residual;
+      else if(!(residual < 0.75 * residual_with_lean)) break;
+      trial.iterations += r.iterations;
+      r = trial;
+      r.unrefined = positions[i] = y;
+      landmarks[i] = lm;
     }
-    else
-      coarse = spline_icp(s, info, lm, base, options, r.iterations);
-    positions[i] = laplacian_icp(s, info, lm, coarse, options, r.iterations);
-    std::vector<Vec3> frame;
-    project(s, info, lm, positions[i], frame);
-    for(const auto& [v, p] : lm.vertex_targets) positions[i].row(v) = p.transpose();
-    r.unrefined = positions[i];
   }
 
   std::vector<Point_matrix> unrefined = positions;
