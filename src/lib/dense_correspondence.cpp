@@ -771,7 +771,10 @@ Point_matrix laplacian_icp(const Surface& s, const Template_info& info, const La
 }
 
 // Interior vertices onto the surface (with the face normal), boundary
-// vertices onto their matched loop (with the loop tangent).
+// vertices onto their matched loop (with the loop tangent). A thousandth
+// of the way back keeps vertices that land on one point (a corner of the
+// segment) or on one straight border edge apart, so no template triangle
+// becomes degenerate.
 void project(const Surface& s, const Template_info& info, const Landmarks& lm, Point_matrix& y,
              std::vector<Vec3>& frame)
 {
@@ -779,9 +782,9 @@ void project(const Surface& s, const Template_info& info, const Landmarks& lm, P
   for(Eigen::Index v = 0; v < y.rows(); ++v)
   {
     const int l = info.loop[v];
-    y.row(v) = (l >= 0 ? s.closest_on_loop(lm.loops[l].target, y.row(v).transpose(), &frame[v])
-                       : s.closest(y.row(v).transpose(), &frame[v]))
-                 .transpose();
+    const Vec3 p = y.row(v).transpose();
+    const Vec3 q = l >= 0 ? s.closest_on_loop(lm.loops[l].target, p, &frame[v]) : s.closest(p, &frame[v]);
+    y.row(v) = (q + 1e-3 * (p - q)).transpose();
   }
 }
 
