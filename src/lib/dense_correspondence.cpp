@@ -316,6 +316,10 @@ double rms(const Point_matrix& a, const Point_matrix& b)
 // alignment rotating least wins: a score grows by this fraction per half turn.
 constexpr double rotation_preference = 1.;
 
+// Coverage residual (fraction of the diagonal) above which the mirrored
+// template is tried too.
+constexpr double mirror_threshold = 0.02;
+
 // Candidate alignments (loop matching with cyclic shift and orientation,
 // or principal frames for closed segments), scored by the landmark residual
 // after rigid alignment plus the mean distance of template samples to the
@@ -992,6 +996,14 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
 
   const Surface& t = *surfaces[0];
   const Template_info info = make_template_info(t);
+  // The template reflected through x = 0, triangles reversed so that it
+  // stays consistently oriented.
+  Indexed_mesh mirrored_template = t.mesh;
+  mirrored_template.points.col(0) *= -1.;
+  for(Triangle& f : mirrored_template.triangles) std::swap(f[1], f[2]);
+  Surface mirror(mirrored_template, type_name, segments[0].name);
+  tag_loops(mirror, segments[0].seam_tags);
+  const Template_info mirror_info = make_template_info(mirror);
   Dense_correspondence result;
   result.triangles = t.mesh.triangles;
   result.segments.resize(m);
@@ -1030,17 +1042,20 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
     const Surface& s = *surfaces[i];
     Segment_correspondence& r = result.segments[i];
     r.order = static_cast<int>(rank);
-    // The lean of a lone seam is a cue at a mitred joint but arbitrary at a
-    // hand-made cut: with one loop, both are tried and the one covering the
-    // segment better wins (the lean on near ties: within a quarter).
-    double residual_with_lean = 0.;
-    for(bool use_tilt : {true, false})
+    // One attempt with template `tmpl` (the template or its mirror image).
+    struct Attempt
     {
-      if(!use_tilt && t.loops.size() != 1) break;
-      Segment_correspondence trial = r;
-      const Landmarks lm = match_landmarks(t, s, segments[0].landmarks, segments[i].landmarks, options.loop_samples, use_tilt);
-      trial.automatic_landmarks = lm.automatic;
-      const Point_matrix base = lm.motion.apply(t.mesh.points);
+      Segment_correspondence r;
+      Landmarks lm;
+      Point_matrix y;
+      double residual = std::numeric_limits<double>::infinity();
+    };
+    const auto attempt = [&](const Surface& tmpl, const Template_info& tinfo, bool use_tilt) {
+      Attempt a;
+      a.r = r;
+      a.lm = match_landmarks(tmpl, s, segments[0].landmarks, segments[i].landmarks, options.loop_samples, use_tilt);
+      a.r.automatic_landmarks = a.lm.automatic;
+      const Point_matrix base = a.lm.motion.apply(tmpl.mesh.points);
       Point_matrix coarse;
       if(options.segments_before_pca > 0 && int(rank) > options.segments_before_pca)
       {
@@ -1050,24 +1065,64 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
         so.explained_variance = 1.;
         const Shape_space space = learn_shape_space(instances, so);
         const Point_matrix start =
-          base + fit_spline(lm.motion.apply(lm.source), lm.target - lm.motion.apply(lm.source), s.diagonal).displacement(base);
-        coarse = shape_space_icp(s, info, lm, space, start, options, trial.iterations);
-        trial.used_shape_space = true;
+          base + fit_spline(a.lm.motion.apply(a.lm.source), a.lm.target - a.lm.motion.apply(a.lm.source), s.diagonal)
+                   .displacement(base);
+        coarse = shape_space_icp(s, tinfo, a.lm, space, start, options, a.r.iterations);
+        a.r.used_shape_space = true;
       }
       else
-        coarse = spline_icp(s, info, lm, base, options, trial.iterations);
-      Point_matrix y = laplacian_icp(s, info, lm, coarse, options, trial.iterations);
+        coarse = spline_icp(s, tinfo, a.lm, base, options, a.r.iterations);
+      a.y = laplacian_icp(s, tinfo, a.lm, coarse, options, a.r.iterations);
       std::vector<Vec3> frame;
-      project(s, info, lm, y, frame);
-      for(const auto& [v, p] : lm.vertex_targets) y.row(v) = p.transpose();
-      const double residual = coverage_residual(s, y, t.mesh.triangles);
-      if(use_tilt) residual_with_lean = residual;
-      else if(!(residual < 0.75 * residual_with_lean)) break;
-      trial.iterations += r.iterations;
-      r = trial;
-      r.unrefined = positions[i] = y;
-      landmarks[i] = lm;
+      project(s, tinfo, a.lm, a.y, frame);
+      for(const auto& [v, p] : a.lm.vertex_targets) a.y.row(v) = p.transpose();
+      a.residual = coverage_residual(s, a.y, t.mesh.triangles);
+      return a;
+    };
+    // The lean of a lone seam is a cue at a mitred joint but arbitrary at a
+    // hand-made cut: with one loop, both are tried and the one covering the
+    // segment better wins (the lean on near ties: within a quarter).
+    const auto best_of = [&](const Surface& tmpl, const Template_info& tinfo) {
+      Attempt best = attempt(tmpl, tinfo, true);
+      if(tmpl.loops.size() == 1)
+      {
+        Attempt other = attempt(tmpl, tinfo, false);
+        other.r.iterations += best.r.iterations;
+        if(other.residual < 0.75 * best.residual) best = std::move(other);
+      }
+      return best;
+    };
+    Attempt chosen = best_of(t, info);
+    // A poor fit may be a mirror image (a left and a right limb): the
+    // mirrored template is tried and kept when it covers clearly better.
+    if(chosen.residual > mirror_threshold)
+    {
+      Attempt reflected = best_of(mirror, mirror_info);
+      if(reflected.residual < 0.75 * chosen.residual)
+      {
+        reflected.r.mirrored = true;
+        reflected.r.iterations += chosen.r.iterations;
+        // The mirror runs its loops the other way round: parameter u on
+        // template loop l is c - u on the mirror's loop through the same
+        // vertices, c the mirror's parameter of the loop's first vertex.
+        std::vector<Loop_match> loops(t.loops.size());
+        for(std::size_t l = 0; l < t.loops.size(); ++l)
+          for(std::size_t k = 0; k < mirror.loops.size(); ++k)
+          {
+            const Loop& ml = mirror.loops[k];
+            const auto it = std::find(ml.vertices.begin(), ml.vertices.end(), t.loops[l].vertices.front());
+            if(it == ml.vertices.end()) continue;
+            const double c = ml.parameter(static_cast<int>(it - ml.vertices.begin()));
+            const Loop_match& mm = reflected.lm.loops[k];
+            loops[l] = {mm.target, -mm.orientation, mm.offset + mm.orientation * c};
+          }
+        reflected.lm.loops = loops;
+        chosen = std::move(reflected);
+      }
     }
+    r = chosen.r;
+    r.unrefined = positions[i] = chosen.y;
+    landmarks[i] = chosen.lm;
   }
 
   std::vector<Point_matrix> unrefined = positions;

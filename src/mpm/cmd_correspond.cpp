@@ -106,6 +106,7 @@ int run_correspond(const Args& args, Context& context)
                           {"order", s.order},
                           {"iterations", s.iterations},
                           {"shape_space_regularizer", s.used_shape_space},
+                          {"mirrored", s.mirrored},
                           {"automatic_landmarks", s.automatic_landmarks},
                           {"residual", s.residual}});
     }

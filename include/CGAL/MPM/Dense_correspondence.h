@@ -77,6 +77,9 @@ struct Segment_correspondence
   int order = 0;                 ///< rank in which the segment was added (the template is 0)
   int iterations = 0;            ///< ICP iterations spent
   bool used_shape_space = false; ///< the PCA space was the coarse regularizer
+  /// The segment is a mirror image of the template (a left and a right
+  /// limb): the template's triangles face inwards on it.
+  bool mirrored = false;
   int automatic_landmarks = 0;   ///< landmark pairs proposed automatically
   /// Root mean square distance of the segment's vertices to the mapped
   /// template, over the bounding-box diagonal (how well the template covers it).
