@@ -172,7 +172,29 @@ struct Off_header
 {
   bool binary = false;
   std::uint64_t vertices = 0, faces = 0;
+  std::string bad_count; // what is wrong with a count CGAL would misread, or empty
 };
+
+// CGAL reads the edge count as an int and doubles it (undefined behaviour
+// beyond INT_MAX / 2, found by fuzz_mesh_io); a negative count is as wrong.
+// A token that is not an integer at all is left alone: the edge count is
+// ignored, and a file without one fails later with its own message.
+bool edge_count_out_of_range(std::string_view token)
+{
+  bool negative = false;
+  if(!token.empty() && (token.front() == '+' || token.front() == '-')) {
+    negative = token.front() == '-';
+    token.remove_prefix(1);
+  }
+  std::size_t digits = 0;
+  while(digits < token.size() && std::isdigit(static_cast<unsigned char>(token[digits]))) ++digits;
+  if(digits == 0) return false;
+  token = token.substr(0, digits);
+  if(negative) return token.find_first_not_of('0') != std::string_view::npos;
+  std::uint64_t value = 0;
+  const auto r = std::from_chars(token.data(), token.data() + token.size(), value);
+  return r.ec != std::errc() || value > std::uint64_t(std::numeric_limits<int>::max() / 2);
+}
 
 // Parses the counts of an OFF header, or returns false when they cannot be
 // found (CGAL's reader then reports the failure).
@@ -219,6 +241,8 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
       };
       h.vertices = be32(p);
       h.faces = be32(p + 4);
+      if(be32(p + 8) > std::uint32_t(std::numeric_limits<int>::max() / 2))
+        h.bad_count = "the edge count " + std::to_string(be32(p + 8)) + " is too large for CGAL's reader";
       return true;
     }
   } else {
@@ -228,8 +252,20 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
   if(counts_follow && !s.next(nv)) return false;
   if(!s.next(nf)) return false;
   Token ne;
-  s.next(ne); // the edge count is ignored by every reader
-  return parse_integer(nv.text, h.vertices) && parse_integer(nf.text, h.faces);
+  const bool has_edges = s.next(ne);
+  // Without a keyword, a first token that is no count means the file is not
+  // OFF at all (diagnose_off() says so).
+  if(!parse_integer(nv.text, h.vertices)) {
+    if(counts_follow) h.bad_count = "the vertex count " + printable(nv.text) + " is not a non-negative integer";
+    return false;
+  }
+  if(!parse_integer(nf.text, h.faces)) {
+    h.bad_count = "the face count " + printable(nf.text) + " is not a non-negative integer";
+    return false;
+  }
+  if(has_edges && edge_count_out_of_range(ne.text))
+    h.bad_count = "the edge count " + printable(ne.text) + " is negative or too large for CGAL's reader";
+  return true;
 }
 
 // CGAL's OFF reader allocates the announced number of vertices and faces
@@ -242,7 +278,9 @@ void check_off_counts_fit(const std::string& path, std::uintmax_t file_size)
   head.resize(static_cast<std::size_t>(in.gcount()));
   Off_header h;
   Text_scanner s(head);
-  if(!parse_off_header(head, h, s)) return;
+  const bool parsed = parse_off_header(head, h, s);
+  if(!h.bad_count.empty()) throw Input_error(path, "header", h.bad_count);
+  if(!parsed) return;
   // Smallest possible records: "0 0 0\n" and "3 0 1 2\n" as text, three
   // floats and a corner count in binary.
   const std::uint64_t vertex_bytes = h.binary ? 12 : 6, face_bytes = h.binary ? 4 : 8;

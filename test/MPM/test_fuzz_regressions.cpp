@@ -222,6 +222,32 @@ TEST(Fuzz_regressions, off_keyword_ended_by_punctuation_with_huge_face_count)
   EXPECT_EQ(read_mesh_file(fuzz.path).mesh.number_of_faces(), 1);
 }
 
+// fuzz_mesh_io-crash-e36c6699bb706c3c2191d630e742c87a776bbe92 (mode 0x0c:
+// .off, read_mesh_file only). `OFF` then `5 11111-1111111111`: CGAL reads
+// the face count 11111 and -1111111111 as the edge count, an int it
+// doubles (signed overflow, File_header_OFF_impl.h:404).
+TEST(Fuzz_regressions, off_edge_count_overflow)
+{
+  static const unsigned char input[] = {
+    0x0c, 0x4f, 0x46, 0x46, 0x0a, 0x35, 0x20, 0x31, 0x31, 0x31, 0x31, 0x31, 0x2d, 0x31, 0x31, 0x31,
+    0x31, 0x31, 0x31, 0x31, 0x31, 0x31, 0x31, 0x20, 0x0a,
+  };
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": header: the face count \"11111-1111111111\" is not a non-negative integer");
+  // An edge count CGAL would double beyond INT_MAX, or a negative one.
+  mpm_test::write_bytes(fuzz.path, "OFF\n3 1 1111111111\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": header: the edge count \"1111111111\" is negative or too large for CGAL's reader");
+  mpm_test::write_bytes(fuzz.path, "OFF\n3 1 -3\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": header: the edge count \"-3\" is negative or too large for CGAL's reader");
+  // Edge counts CGAL reads fine are accepted, whatever they say.
+  mpm_test::write_bytes(fuzz.path, "OFF\n3 1 99\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(read_mesh_file(fuzz.path).mesh.number_of_faces(), 1);
+}
+
 // fuzz_mesh_io-crash-9b7837b29a1780bc0aaaef1764b53de9a21f7475 (mode 0x0a:
 // .ply, labels from face property `label`). `property int32 x`: CGAL's PLY
 // reader casts the coordinate property to float when it is not double and
