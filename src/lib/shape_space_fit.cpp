@@ -45,8 +45,10 @@ Rigid_motion fit_motion(const Point_matrix& from, const Point_matrix& to)
   if(from.rows() >= 2)
   {
     const Point_matrix a = from.rowwise() - cf, b = to.rowwise() - ct;
-    Eigen::JacobiSVD<Point_matrix> svd_a(a, Eigen::ComputeThinV), svd_b(b, Eigen::ComputeThinV);
-    const Eigen::Vector3d sa = svd_a.singularValues(), sb = svd_b.singularValues();
+    // Three columns: the full V is 3 x 3 (thin V is only for dynamic columns).
+    Eigen::JacobiSVD<Point_matrix> svd_a(a, Eigen::ComputeFullV), svd_b(b, Eigen::ComputeFullV);
+    // Two points have two singular values.
+    const Eigen::VectorXd sa = svd_a.singularValues(), sb = svd_b.singularValues();
     const bool planar = from.rows() >= 3 && sa[1] > 1e-6 * sa[0] && sb[1] > 1e-6 * sb[0];
     if(planar)
       m = fit_rigid_motion(from, to);
