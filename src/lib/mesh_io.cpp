@@ -176,24 +176,35 @@ struct Off_header
 };
 
 // CGAL reads the edge count as an int and doubles it (undefined behaviour
-// beyond INT_MAX / 2, found by fuzz_mesh_io); a negative count is as wrong.
-// A token that is not an integer at all is left alone: the edge count is
-// ignored, and a file without one fails later with its own message.
-bool edge_count_out_of_range(std::string_view token)
+// beyond INT_MAX / 2, found by fuzz_mesh_io), and reads it only up to the
+// first character that is no digit, so that the rest of a token like "2-1"
+// becomes the first vertex or face line it reads: the edge count must be a
+// whole number from 0 to INT_MAX / 2. Returns what is wrong, or nothing.
+std::string edge_count_problem(std::string_view token)
 {
-  bool negative = false;
-  if(!token.empty() && (token.front() == '+' || token.front() == '-')) {
-    negative = token.front() == '-';
-    token.remove_prefix(1);
-  }
-  std::size_t digits = 0;
-  while(digits < token.size() && std::isdigit(static_cast<unsigned char>(token[digits]))) ++digits;
-  if(digits == 0) return false;
-  token = token.substr(0, digits);
-  if(negative) return token.find_first_not_of('0') != std::string_view::npos;
   std::uint64_t value = 0;
-  const auto r = std::from_chars(token.data(), token.data() + token.size(), value);
-  return r.ec != std::errc() || value > std::uint64_t(std::numeric_limits<int>::max() / 2);
+  if(!parse_integer(token, value))
+    return "the edge count " + printable(token) + " is not a non-negative integer";
+  if(value > std::uint64_t(std::numeric_limits<int>::max() / 2))
+    return "the edge count " + printable(token) + " is too large for CGAL's reader";
+  return {};
+}
+
+// The vertex, face and edge counts as tokens (`edges` null when the file
+// ends before it); `keyword`: the header started with an OFF keyword, so a
+// vertex count that is no integer is a broken header, not another format.
+bool parse_off_counts(const Token& vertices, const Token& faces, const Token* edges, bool keyword, Off_header& h)
+{
+  if(!parse_integer(vertices.text, h.vertices)) {
+    if(keyword) h.bad_count = "the vertex count " + printable(vertices.text) + " is not a non-negative integer";
+    return false;
+  }
+  if(!parse_integer(faces.text, h.faces)) {
+    h.bad_count = "the face count " + printable(faces.text) + " is not a non-negative integer";
+    return false;
+  }
+  if(edges) h.bad_count = edge_count_problem(edges->text);
+  return true;
 }
 
 // Parses the counts of an OFF header, or returns false when they cannot be
@@ -215,10 +226,11 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
     }
   }
   if(!after_keyword_character.empty()) {
-    Token nv = t, nf;
+    Token nv = t, nf, ne;
     nv.text = after_keyword_character;
     if(!s.next(nf)) return false;
-    return parse_integer(nv.text, h.vertices) && parse_integer(nf.text, h.faces);
+    const bool has_edges = s.next(ne);
+    return parse_off_counts(nv, nf, has_edges ? &ne : nullptr, true, h);
   }
   if(t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF") {
     if(t.text.find('n') != std::string_view::npos) { // nOFF: a dimension precedes the counts
@@ -241,8 +253,7 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
       };
       h.vertices = be32(p);
       h.faces = be32(p + 4);
-      if(be32(p + 8) > std::uint32_t(std::numeric_limits<int>::max() / 2))
-        h.bad_count = "the edge count " + std::to_string(be32(p + 8)) + " is too large for CGAL's reader";
+      h.bad_count = edge_count_problem(std::to_string(be32(p + 8)));
       return true;
     }
   } else {
@@ -253,19 +264,7 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
   if(!s.next(nf)) return false;
   Token ne;
   const bool has_edges = s.next(ne);
-  // Without a keyword, a first token that is no count means the file is not
-  // OFF at all (diagnose_off() says so).
-  if(!parse_integer(nv.text, h.vertices)) {
-    if(counts_follow) h.bad_count = "the vertex count " + printable(nv.text) + " is not a non-negative integer";
-    return false;
-  }
-  if(!parse_integer(nf.text, h.faces)) {
-    h.bad_count = "the face count " + printable(nf.text) + " is not a non-negative integer";
-    return false;
-  }
-  if(has_edges && edge_count_out_of_range(ne.text))
-    h.bad_count = "the edge count " + printable(ne.text) + " is negative or too large for CGAL's reader";
-  return true;
+  return parse_off_counts(nv, nf, has_edges ? &ne : nullptr, counts_follow, h);
 }
 
 // CGAL's OFF reader allocates the announced number of vertices and faces

@@ -239,13 +239,33 @@ TEST(Fuzz_regressions, off_edge_count_overflow)
   // An edge count CGAL would double beyond INT_MAX, or a negative one.
   mpm_test::write_bytes(fuzz.path, "OFF\n3 1 1111111111\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
-            fuzz.path + ": header: the edge count \"1111111111\" is negative or too large for CGAL's reader");
+            fuzz.path + ": header: the edge count \"1111111111\" is too large for CGAL's reader");
   mpm_test::write_bytes(fuzz.path, "OFF\n3 1 -3\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
-            fuzz.path + ": header: the edge count \"-3\" is negative or too large for CGAL's reader");
+            fuzz.path + ": header: the edge count \"-3\" is not a non-negative integer");
   // Edge counts CGAL reads fine are accepted, whatever they say.
   mpm_test::write_bytes(fuzz.path, "OFF\n3 1 99\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(read_mesh_file(fuzz.path).mesh.number_of_faces(), 1);
+}
+
+// mesh_final-crash-d092affa1760dc47cc98df9c44c063b43e00bb9c (mode 0x0c:
+// .off, read_mesh_file only). `OFF` ended by byte 2, counts 0 and 5, then
+// `2-1 ...`: CGAL reads the edge count 2 and takes the rest of the line,
+// "-1 0 10 ...", for the first face, whose corner count -1 it casts to
+// std::size_t (File_scanner_OFF.h:718). The edge count must be a whole
+// number, also after a keyword ended by punctuation.
+TEST(Fuzz_regressions, off_edge_count_that_runs_into_the_faces)
+{
+  static const unsigned char input[] = {
+    0x0c, 0x4f, 0x46, 0x46, 0x02, 0x30, 0x20, 0x35, 0x0a, 0x32, 0x2d, 0x31, 0x20, 0x30, 0x20, 0x31,
+    0x30, 0x20, 0x31, 0xea, 0x2d, 0x32, 0x20, 0x32, 0x20, 0x34, 0x20, 0x33, 0x30, 0x20, 0x31, 0x20,
+    0x30, 0x0a, 0x30, 0x2e, 0x35, 0x20, 0x31, 0x30, 0x0a, 0x35, 0x20, 0x30, 0x20, 0x31, 0x20, 0x32,
+    0x20, 0x5d, 0x20, 0x33, 0x0a,
+  };
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": header: the edge count \"2-1\" is not a non-negative integer");
 }
 
 // fuzz_mesh_io-crash-9b7837b29a1780bc0aaaef1764b53de9a21f7475 (mode 0x0a:
