@@ -330,14 +330,21 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
       throw Input_error(path, "header line " + std::to_string(number),
                         "a property declared before any element (malformed PLY header)");
     // CGAL reads coordinates only from float or double properties: it
-    // dereferences a null pointer for any other type.
+    // dereferences a null pointer for any other type, a list included
+    // (`property list uchar uchar y`, found by fuzz_mesh_io).
     std::string type, name;
-    if(keyword == "property" && element_name == "vertex" && iss >> type >> name
-       && (name == "x" || name == "y" || name == "z") && type != "float" && type != "float32"
-       && type != "double" && type != "float64")
-      throw Input_error(path, "header line " + std::to_string(number),
-                        "vertex coordinate " + printable(name) + " has type " + printable(type) +
-                          " (supported: float, double)");
+    if(keyword == "property" && element_name == "vertex" && iss >> type >> name) {
+      if(type == "list") {
+        std::string item_type;
+        if(!(iss >> item_type >> name)) continue;
+        type = "list of " + item_type;
+      }
+      if((name == "x" || name == "y" || name == "z") && type != "float" && type != "float32"
+         && type != "double" && type != "float64")
+        throw Input_error(path, "header line " + std::to_string(number),
+                          "vertex coordinate " + printable(name) + " has type " + printable(type) +
+                            " (supported: float, double)");
+    }
   }
 }
 
