@@ -16,7 +16,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -171,6 +173,8 @@ void check_coordinate(const std::string& path, const std::string& element, int l
 struct Off_header
 {
   bool binary = false;
+  // What the keyword's prefix announces on each vertex line (CGAL's order: [ST][C][N][4][n]OFF).
+  bool textures = false, colors = false, normals = false, homogeneous = false;
   std::uint64_t vertices = 0, faces = 0;
   std::string bad_count; // what is wrong with a count CGAL would misread, or empty
 };
@@ -233,6 +237,16 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
     return parse_off_counts(nv, nf, has_edges ? &ne : nullptr, true, h);
   }
   if(t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF") {
+    std::string_view prefix = t.text.substr(0, t.text.size() - 3);
+    const auto take = [&prefix](std::string_view flag) {
+      if(prefix.substr(0, flag.size()) != flag) return false;
+      prefix.remove_prefix(flag.size());
+      return true;
+    };
+    h.textures = take("ST");
+    h.colors = take("C");
+    h.normals = take("N");
+    h.homogeneous = take("4");
     if(t.text.find('n') != std::string_view::npos) { // nOFF: a dimension precedes the counts
       Token dimension;
       if(!s.next(dimension)) return false;
@@ -348,42 +362,130 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
   }
 }
 
-// CGAL's ASCII OFF reader reads the numbers of a face line (the corner
-// count, then the vertex indices) as doubles and casts them to std::size_t:
-// undefined behaviour for -1 or less and for 2^64 or more. Refuse such
-// numbers first. Faces are found as diagnose_off() finds them; anything else
-// is left to CGAL.
-void check_off_face_numbers(const std::string& path)
+// The numbers CGAL's ASCII OFF reader finds on a vertex or face line, read
+// as it reads them (File_scanner_OFF with IO::iformat): the line ends at
+// '#'; a number is a run of the characters [0-9.eE+-] after an optional
+// '+', converted by sscanf("%lf"), and reading stops at the first run that
+// is no number. Counting them otherwise than CGAL would miss its
+// out-of-bounds reads.
+struct Off_number
+{
+  double value;
+  std::string text; // as CGAL read it: "+-5" is "-5"
+};
+
+std::vector<Off_number> cgal_off_numbers(std::string_view line)
+{
+  line = line.substr(0, line.find('#'));
+  std::vector<Off_number> numbers;
+  std::size_t i = 0;
+  for(;;) {
+    while(i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    if(i == line.size()) return numbers;
+    std::string run;
+    if(line[i] == '-') run += '-';
+    if(line[i] == '-' || line[i] == '+') ++i;
+    while(i < line.size() && (std::isdigit(static_cast<unsigned char>(line[i])) || std::strchr(".eE+-", line[i]) != nullptr))
+      run += line[i++];
+    double value;
+    if(std::sscanf(run.c_str(), "%lf", &value) != 1) return numbers;
+    numbers.push_back({value, run});
+  }
+}
+
+// The text of the line that starts at `t` (the line CGAL reads as one vertex or face).
+std::string_view line_from(std::string_view text, const Token& t)
+{
+  const std::size_t begin = std::size_t(t.text.data() - text.data());
+  return text.substr(begin, text.find('\n', begin) - begin);
+}
+
+// Whether `x` has a value when cast to an integer type whose range is [0, limit).
+bool castable(double x, double limit) { return x > -1. && x < limit; }
+
+// Checks the colour numbers of a vertex or face line of a COFF file.
+// CGAL decides from the first line with colours that all later lines have
+// them, then reads them by position: past the end of a line with none or
+// with two; it casts a colour index to int and indexes a table with it, and
+// casts components to unsigned char. `coloured`: an earlier line had colours.
+void check_off_colour(const std::string& path, const std::string& element, int line,
+                      const std::vector<Off_number>& numbers, std::size_t first, bool& coloured)
+{
+  const std::size_t count = numbers.size() - first;
+  const std::string where = "line " + std::to_string(line) + ": ";
+  if(count == 0 && coloured)
+    throw Input_error(path, element, where + "no colour, but an earlier line of this COFF file has one");
+  if(count == 0) return;
+  coloured = true;
+  if(count == 2)
+    throw Input_error(path, element, where + "2 colour numbers (a colour is an index or 3 or 4 components)");
+  if(count == 1) {
+    if(!castable(numbers[first].value, 2147483648.))
+      throw Input_error(path, element, where + "colour index " + printable(numbers[first].text) + " is out of range");
+    return;
+  }
+  const bool integers = std::all_of(numbers.begin() + long(first), numbers.begin() + long(first) + 3,
+                                    [](const Off_number& c) { return std::floor(c.value) == c.value; });
+  for(std::size_t c = first; c < first + 3; ++c)
+    if(!castable(integers ? numbers[c].value : numbers[c].value * 255., 256.))
+      throw Input_error(path, element, where + "colour component " + printable(numbers[c].text) +
+                                         " is out of range (0 to 255, or 0 to 1 when not all are integers)");
+}
+
+// CGAL's ASCII OFF reader reads vertex and face lines without checking
+// them where it would overrun or cast out of range: refuse such lines
+// first. It casts the corner count and vertex indices of a face (doubles)
+// to std::size_t: undefined for -1 or less and for 2^64 or more. In a file
+// with colours (COFF) see check_off_colour(); with texture coordinates
+// (STOFF) it reads them past a vertex line that has too few numbers, and,
+// without colours, at an uninitialized position. With homogeneous
+// coordinates (4OFF) it asserts that w is not 0. Anything else is left to
+// CGAL, whose failures diagnose_off() explains.
+void check_off_lines(const std::string& path)
 {
   const std::string text = internal::read_file(path);
   Text_scanner s(text);
   Off_header h;
   if(!parse_off_header(text, h, s) || h.binary) return;
+  if(h.textures && !h.colors)
+    throw Input_error(path, "header", "texture coordinates without colours (STOFF) are not supported: "
+                                      "CGAL's reader misreads them");
+  const std::size_t w = h.homogeneous ? 1 : 0;
+  const std::size_t vertex_numbers = 3 + w + (h.normals ? 3 + w : 0) + (h.textures ? 2 + w : 0);
+  bool coloured = false;
   Token t;
   for(std::uint64_t v = 0; v < h.vertices; ++v) {
-    if(!s.next(t)) return;
+    if(!s.next(t)) {
+      if(h.colors) throw_truncated(path, v, h.vertices, "vertices");
+      return;
+    }
+    const std::vector<Off_number> numbers = cgal_off_numbers(line_from(text, t));
     s.rest_of_line();
+    const std::string element = vertex_name(int(std::min<std::uint64_t>(v, std::numeric_limits<int>::max())));
+    if((h.colors || h.homogeneous) && numbers.size() < vertex_numbers)
+      throw Input_error(path, element, "line " + std::to_string(t.line) + ": " + std::to_string(numbers.size()) +
+                                         " numbers, fewer than the " + std::to_string(vertex_numbers) +
+                                         " its header announces");
+    if(h.homogeneous && numbers[3].value == 0.)
+      throw Input_error(path, element, "line " + std::to_string(t.line) + ": homogeneous coordinate w is 0");
+    if(h.colors) check_off_colour(path, element, t.line, numbers, vertex_numbers, coloured);
   }
-  // Whether `token` starts with a number that has no std::size_t value.
-  const auto out_of_range = [](std::string_view token, double& value) {
-    const std::string copy(token);
-    char* end = nullptr;
-    value = std::strtod(copy.c_str(), &end);
-    return end != copy.c_str() && !(value > -1. && value < 18446744073709551616.);
-  };
+  coloured = false;
   for(std::uint64_t f = 0; f < h.faces; ++f) {
     if(!s.next(t)) return;
+    const std::vector<Off_number> numbers = cgal_off_numbers(line_from(text, t));
+    s.rest_of_line();
+    if(numbers.empty()) return;
     const std::string element = face_name(int(std::min<std::uint64_t>(f, std::numeric_limits<int>::max())));
-    double corners;
-    if(out_of_range(t.text, corners))
-      throw Input_error(path, element, "line " + std::to_string(t.line) + ": corner count " + printable(t.text) +
+    const std::string where = "line " + std::to_string(t.line) + ": ";
+    if(!castable(numbers[0].value, 18446744073709551616.))
+      throw Input_error(path, element, where + "corner count " + printable(numbers[0].text) +
                                          " is not a non-negative integer");
-    const std::vector<Token> line = s.rest_of_line();
-    double index;
-    for(std::size_t c = 0; c < line.size() && double(c) < corners; ++c)
-      if(out_of_range(line[c].text, index))
-        throw Input_error(path, element, "line " + std::to_string(t.line) + ": vertex index " +
-                                           printable(line[c].text) + " is out of range");
+    const std::size_t announced = std::size_t(numbers[0].value);
+    for(std::size_t c = 1; c < numbers.size() && c <= announced; ++c)
+      if(!castable(numbers[c].value, 18446744073709551616.))
+        throw Input_error(path, element, where + "vertex index " + printable(numbers[c].text) + " is out of range");
+    if(h.colors && numbers.size() > announced) check_off_colour(path, element, t.line, numbers, announced + 1, coloured);
   }
 }
 
@@ -669,7 +771,7 @@ Mesh_file read_mesh_file(const std::string& path)
   if(ext == ".off")
     check_off_counts_fit(path, size);
   if(ext == ".off")
-    check_off_face_numbers(path);
+    check_off_lines(path);
   if(ext == ".ply")
     check_ply_header(path, size);
 

@@ -392,3 +392,84 @@ TEST(Fuzz_regressions, ply_negative_list_size)
   const std::string message = input_error_message([&] { read_mesh_file(fuzz.path); });
   EXPECT_EQ(message.rfind(fuzz.path + ": ", 0), 0u) << message;
 }
+
+// fuzz_mesh_io-crash-59ab40d0a2789374487f547231f3ab5ae1fcd4cd (mode 0x00:
+// .off with a .seg file). A COFF file that ends after its first vertex:
+// CGAL counts -3 colour numbers on the missing second line, decides from
+// that that vertices have colours and reads them past the end of the
+// line's numbers (AddressSanitizer: heap-buffer-overflow in
+// File_scanner_OFF::scan_color).
+TEST(Fuzz_regressions, coff_vertex_line_missing)
+{
+  static const unsigned char input[] = {
+    0x00, 0x43, 0x4f, 0x46, 0x46, 0x0a, 0x33, 0x20, 0x32, 0x20, 0x30, 0x30, 0x0a, 0x30, 0x20, 0x31,
+    0x20, 0x30, 0x32, 0xfe, 0x23, 0xcc, 0x53, 0x45, 0x47, 0x61, 0x73, 0x63, 0x0a, 0x23, 0x53, 0x45,
+    0x47, 0x61, 0x73, 0x63, 0x69, 0x69,
+  };
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": truncated: the file ends after 1 of 3 vertices");
+}
+
+namespace {
+
+const char* const coff_triangle_faces = "3 0 1 2\n3 0 2 3\n";
+
+// The message read_mesh_file() gives for an OFF file made of `text`.
+std::string off_message(const std::string& text)
+{
+  Scratch_directory dir;
+  const std::string path = dir.file("m.off");
+  mpm_test::write_bytes(path, text);
+  const std::string message = input_error_message([&] { read_mesh_file(path); });
+  return message.substr(message.find(": ") + 2);
+}
+
+} // namespace
+
+// The other vertex and face lines CGAL's COFF reader overruns or casts out
+// of range, found by reading File_scanner_OFF after the finding above.
+TEST(Fuzz_regressions, coff_colour_lines_cgal_would_overrun)
+{
+  const std::string header = "COFF\n4 2 0\n";
+  EXPECT_EQ(off_message(header + "0 0 0 255 0 0\n1 0 0\n0 1 0\n1 1 0\n" + coff_triangle_faces),
+            "vertex 1: line 4: no colour, but an earlier line of this COFF file has one");
+  EXPECT_EQ(off_message(header + "0 0 0 255 0\n1 0 0\n0 1 0\n1 1 0\n" + coff_triangle_faces),
+            "vertex 0: line 3: 2 colour numbers (a colour is an index or 3 or 4 components)");
+  EXPECT_EQ(off_message(header + "0 0 0 -7\n1 0 0 1\n0 1 0 1\n1 1 0 1\n" + coff_triangle_faces),
+            "vertex 0: line 3: colour index \"-7\" is out of range");
+  EXPECT_EQ(off_message(header + "0 0 0 0 0 0\n1 0 0 0 0 0\n0 1 0 0 0 0\n1 1 0 300 0 0\n" + coff_triangle_faces),
+            "vertex 3: line 6: colour component \"300\" is out of range (0 to 255, or 0 to 1 when not all are "
+            "integers)");
+  EXPECT_EQ(off_message(header + "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 0.5 0.5 0.5\n3 0 2 3\n"),
+            "face 1: line 8: no colour, but an earlier line of this COFF file has one");
+  EXPECT_EQ(off_message("CNOFF\n4 2 0\n0 0 0 0 0 1 9\n1 0 0 0 0\n0 1 0 0 0 1 9\n1 1 0 0 0 1 9\n" +
+                        std::string(coff_triangle_faces)),
+            "vertex 1: line 4: 5 numbers, fewer than the 6 its header announces");
+  EXPECT_EQ(off_message("4OFF\n3 1 0\n0 0 0 1\n1 0 0 0\n0 1 0 1\n3 0 1 2\n"),
+            "vertex 1: line 4: homogeneous coordinate w is 0");
+  EXPECT_EQ(off_message("STOFF\n3 1 0\n0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 0\n3 0 1 2\n"),
+            "header: texture coordinates without colours (STOFF) are not supported: CGAL's reader misreads them");
+  // CGAL skips a '+' before a number: "+-5" is a corner count of -5.
+  EXPECT_EQ(off_message("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n+-5 0 1 2\n"),
+            "face 0: line 6: corner count \"-5\" is not a non-negative integer");
+}
+
+// Well-formed coloured files still read: vertex colours as integers,
+// fractions or indices, face colours, homogeneous coordinates.
+TEST(Fuzz_regressions, coff_check_accepts_valid_files)
+{
+  Scratch_directory dir;
+  const std::string path = dir.file("ok.off");
+  for(const std::string text :
+      {std::string("COFF\n4 2 0\n0 0 0 255 0 0\n1 0 0 0 255 0 255\n0 1 0 0.5 0.5 1\n1 1 0 3\n") + coff_triangle_faces,
+       std::string("COFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 1 0 0\n3 0 2 3 7\n"),
+       std::string("CN4OFF\n4 2 0\n0 0 0 1 0 0 1 1 7\n2 0 0 2 0 0 1 1 7\n0 1 0 1 0 0 1 1 7\n"
+                   "1 1 0 1 0 0 1 1 7\n") + coff_triangle_faces}) {
+    mpm_test::write_bytes(path, text);
+    const Mesh_file f = read_mesh_file(path);
+    EXPECT_EQ(f.mesh.number_of_vertices(), 4) << text;
+    EXPECT_EQ(f.mesh.number_of_faces(), 2) << text;
+  }
+}
