@@ -229,14 +229,8 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
       t.text = t.text.substr(0, k);
     }
   }
-  if(!after_keyword_character.empty()) {
-    Token nv = t, nf, ne;
-    nv.text = after_keyword_character;
-    if(!s.next(nf)) return false;
-    const bool has_edges = s.next(ne);
-    return parse_off_counts(nv, nf, has_edges ? &ne : nullptr, true, h);
-  }
-  if(t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF") {
+  const bool keyword = t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF";
+  if(keyword) {
     std::string_view prefix = t.text.substr(0, t.text.size() - 3);
     const auto take = [&prefix](std::string_view flag) {
       if(prefix.substr(0, flag.size()) != flag) return false;
@@ -247,6 +241,15 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
     h.colors = take("C");
     h.normals = take("N");
     h.homogeneous = take("4");
+  }
+  if(!after_keyword_character.empty()) {
+    Token nv = t, nf, ne;
+    nv.text = after_keyword_character;
+    if(!s.next(nf)) return false;
+    const bool has_edges = s.next(ne);
+    return parse_off_counts(nv, nf, has_edges ? &ne : nullptr, true, h);
+  }
+  if(keyword) {
     if(t.text.find('n') != std::string_view::npos) { // nOFF: a dimension precedes the counts
       Token dimension;
       if(!s.next(dimension)) return false;

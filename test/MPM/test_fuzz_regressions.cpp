@@ -412,6 +412,23 @@ TEST(Fuzz_regressions, coff_vertex_line_missing)
             fuzz.path + ": truncated: the file ends after 1 of 3 vertices");
 }
 
+// fuzz_mesh_io-crash-af28dfdee280f90ec2f4bbb4a9a4f1f76703ea7e (mode 0x00,
+// the rerun after the fix above, 78,030 executions): the same overrun
+// behind a keyword ended by a byte that is no letter (`COFF\xec3 2 00`),
+// whose colours the check did not see.
+TEST(Fuzz_regressions, coff_keyword_ended_by_punctuation)
+{
+  static const unsigned char input[] = {
+    0x00, 0x43, 0x4f, 0x46, 0x46, 0xec, 0x33, 0x20, 0x32, 0x20, 0x30, 0x30, 0x0a, 0x30, 0x20, 0x31,
+    0x24, 0x30, 0x32, 0xfe, 0x23, 0xcc, 0x53, 0x45, 0x47, 0x0a, 0x23, 0x53, 0x45, 0x47, 0x61, 0x73,
+    0x63, 0x69, 0x69,
+  };
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": vertex 0: line 2: 2 numbers, fewer than the 3 its header announces");
+}
+
 namespace {
 
 const char* const coff_triangle_faces = "3 0 1 2\n3 0 2 3\n";
