@@ -18,7 +18,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -388,8 +387,10 @@ std::vector<Off_number> cgal_off_numbers(std::string_view line)
     std::string run;
     if(line[i] == '-') run += '-';
     if(line[i] == '-' || line[i] == '+') ++i;
-    while(i < line.size() && (std::isdigit(static_cast<unsigned char>(line[i])) || std::strchr(".eE+-", line[i]) != nullptr))
-      run += line[i++];
+    const auto in_number = [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
+    };
+    while(i < line.size() && in_number(line[i])) run += line[i++];
     double value;
     if(std::sscanf(run.c_str(), "%lf", &value) != 1) return numbers;
     numbers.push_back({value, run});
@@ -467,7 +468,7 @@ void check_off_lines(const std::string& path)
     const std::string element = vertex_name(int(std::min<std::uint64_t>(v, std::numeric_limits<int>::max())));
     if((h.colors || h.homogeneous) && numbers.size() < vertex_numbers)
       throw Input_error(path, element, "line " + std::to_string(t.line) + ": " + std::to_string(numbers.size()) +
-                                         " numbers, fewer than the " + std::to_string(vertex_numbers) +
+                                         (numbers.size() == 1 ? " number" : " numbers") + ", fewer than the " + std::to_string(vertex_numbers) +
                                          " its header announces");
     if(h.homogeneous && numbers[3].value == 0.)
       throw Input_error(path, element, "line " + std::to_string(t.line) + ": homogeneous coordinate w is 0");
@@ -475,12 +476,18 @@ void check_off_lines(const std::string& path)
   }
   coloured = false;
   for(std::uint64_t f = 0; f < h.faces; ++f) {
-    if(!s.next(t)) return;
+    // At the end of the file CGAL reads an empty face and, once a face had
+    // colours, its colour from past the end of no numbers.
+    if(!s.next(t)) {
+      if(h.colors) throw_truncated(path, f, h.faces, "faces");
+      return;
+    }
     const std::vector<Off_number> numbers = cgal_off_numbers(line_from(text, t));
     s.rest_of_line();
-    if(numbers.empty()) return;
     const std::string element = face_name(int(std::min<std::uint64_t>(f, std::numeric_limits<int>::max())));
     const std::string where = "line " + std::to_string(t.line) + ": ";
+    if(numbers.empty() && h.colors) throw Input_error(path, element, where + "no corner count");
+    if(numbers.empty()) return;
     if(!castable(numbers[0].value, 18446744073709551616.))
       throw Input_error(path, element, where + "corner count " + printable(numbers[0].text) +
                                          " is not a non-negative integer");
