@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -308,28 +309,169 @@ void check_off_counts_fit(const std::string& path, std::uintmax_t file_size)
                         std::to_string(file_size) + " bytes can hold (truncated or corrupt)");
 }
 
+// The byte size of a PLY scalar type, 0 for a type CGAL does not read.
+std::size_t ply_type_size(const std::string& type)
+{
+  if(type == "char" || type == "int8" || type == "uchar" || type == "uint8") return 1;
+  if(type == "short" || type == "int16" || type == "ushort" || type == "uint16") return 2;
+  if(type == "int" || type == "int32" || type == "uint" || type == "uint32" || type == "float" || type == "float32")
+    return 4;
+  if(type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+struct Ply_property
+{
+  std::string name, type; // the item type of a list
+  std::string count_type; // empty for a scalar
+};
+
+struct Ply_element
+{
+  std::string name;
+  unsigned long long count = 0;
+  int line = 0;
+  std::vector<Ply_property> properties;
+};
+
+// The value of a binary PLY number of `type` at `data`.
+double ply_binary_value(const char* data, const std::string& type, bool big_endian)
+{
+  const std::size_t size = ply_type_size(type);
+  unsigned char bytes[8];
+  std::memcpy(bytes, data, size);
+  if(big_endian) std::reverse(bytes, bytes + size);
+  const auto as = [&bytes](auto value) {
+    std::memcpy(&value, bytes, sizeof value);
+    return double(value);
+  };
+  if(type == "char" || type == "int8") return as(std::int8_t());
+  if(type == "uchar" || type == "uint8") return as(std::uint8_t());
+  if(type == "short" || type == "int16") return as(std::int16_t());
+  if(type == "ushort" || type == "uint16") return as(std::uint16_t());
+  if(type == "int" || type == "int32") return as(std::int32_t());
+  if(type == "uint" || type == "uint32") return as(std::uint32_t());
+  if(type == "float" || type == "float32") return as(float());
+  return as(double());
+}
+
+// Whether CGAL's PLY reader reads `p` (it skips, reading nothing, a scalar
+// of an unknown type and a list whose count is no integer type).
+bool read_by_cgal(const Ply_property& p)
+{
+  if(ply_type_size(p.type) == 0) return false;
+  if(p.count_type.empty()) return true;
+  return ply_type_size(p.count_type) != 0 && p.count_type.find("float") == std::string::npos &&
+         p.count_type != "double";
+}
+
+// Whether `token` is a number as CGAL's PLY reader reads one of `type`
+// whole: an integer for integer types, digits, sign, point and exponent
+// for floating-point ones.
+bool ply_ascii_number(std::string_view token, const std::string& type, double& value)
+{
+  if(type.find("float") == std::string::npos && type != "double") {
+    long long integer;
+    if(!parse_integer(token, integer)) return false;
+    value = double(integer);
+    return true;
+  }
+  return token.find_first_not_of("0123456789.eE+-") == std::string_view::npos && parse_double(token, value);
+}
+
+// CGAL's PLY reader sizes every list from the count it reads (of any list
+// property of any element) before reading the items, and when the file
+// ends early, or an ASCII number does not parse, it goes on with counts it
+// never initialized: a binary header without `end_header` gave a count of
+// 2^32 - 1 and 13.8 GB (found by fuzz_mesh_io). Walk the body as CGAL will
+// and refuse a count that is negative or larger than the rest of the file
+// can hold, a body that ends early, and ASCII tokens that are no numbers.
+void check_ply_body(const std::string& path, const std::string& text, std::size_t body, const std::string& format,
+                    const std::vector<Ply_element>& elements)
+{
+  const bool binary = format != "ascii", big_endian = format == "binary_big_endian";
+  Text_scanner tokens(std::string_view(text).substr(std::min(body, text.size())));
+  tokens.disable_comments();
+  std::size_t at = body;
+  for(const Ply_element& e : elements) {
+    std::vector<Ply_property> read;
+    std::copy_if(e.properties.begin(), e.properties.end(), std::back_inserter(read), read_by_cgal);
+    if(read.empty()) continue;
+    for(unsigned long long i = 0; i < e.count; ++i) {
+      const std::string element = "element " + printable(e.name) + " " + std::to_string(i);
+      const auto next = [&](const Ply_property& p, const std::string& type) {
+        const std::size_t size = ply_type_size(type);
+        double value = 0.;
+        if(binary) {
+          if(text.size() - std::min(at, text.size()) < size)
+            throw Input_error(path, element, "truncated: the file ends in its property " + printable(p.name));
+          value = ply_binary_value(text.data() + at, type, big_endian);
+          at += size;
+          return value;
+        }
+        Token t;
+        if(!tokens.next(t))
+          throw Input_error(path, element, "truncated: the file ends in its property " + printable(p.name));
+        if(!ply_ascii_number(t.text, type, value))
+          throw Input_error(path, element, "property " + printable(p.name) + ": " + printable(t.text) +
+                                             " is not a number of type " + type);
+        at = body + tokens.position();
+        return value;
+      };
+      for(const Ply_property& p : read) {
+        if(p.count_type.empty()) {
+          next(p, p.type);
+          continue;
+        }
+        const double count = next(p, p.count_type);
+        const double room = double(text.size() - std::min(at, text.size())) / (binary ? double(ply_type_size(p.type)) : 2.);
+        if(count < 0 || count > room) {
+          std::ostringstream value;
+          value << std::setprecision(17) << count;
+          throw Input_error(path, element, "list " + printable(p.name) + " announces " + value.str() + " items, " +
+                                             (count < 0 ? "a negative count"
+                                                        : "more than the rest of the file can hold (corrupt file)"));
+        }
+        if(binary)
+          at += std::size_t(count) * ply_type_size(p.type);
+        else
+          for(double k = 0; k < count; ++k) next(p, p.type);
+      }
+    }
+  }
+}
+
 // CGAL's PLY header reader attaches each `property` line to the last
 // `element` and has undefined behaviour (back() of an empty vector) for a
 // property before any element; it reads an element count as std::size_t,
 // so `-4` becomes 2^64 - 4 and the reader loops (and allocates) that many
-// times. Refuse such headers first. Lines are split as CGAL splits them;
-// the check stops where CGAL's would stop.
+// times. Refuse such headers first, then bodies CGAL would misread
+// (check_ply_body()). Lines are split as CGAL splits them; the
+// check stops where CGAL's would stop.
 void check_ply_header(const std::string& path, std::uintmax_t file_size)
 {
-  std::ifstream in(path, std::ios::in | std::ios::binary);
-  std::string line, element_name;
-  bool element_seen = false;
+  const std::string text = internal::read_file(path);
+  std::istringstream in(text);
+  std::string line, format;
+  std::vector<Ply_element> elements;
   for(int number = 1; std::getline(in, line); ++number) {
     std::istringstream iss(line);
     std::string keyword;
     if(number == 1 && !(iss >> keyword && keyword == "ply")) return; // CGAL refuses the signature
-    if(number <= 2) continue; // the format line, checked by CGAL
-    if(!(iss >> keyword) || keyword == "end_header") return;
+    if(number == 2) {
+      std::string version;
+      if(!(iss >> keyword >> format >> version)) return;
+    }
+    if(number <= 2) continue;
+    if(!(iss >> keyword)) return;
+    if(keyword == "end_header") {
+      const std::streamoff body = in.tellg();
+      if(body >= 0) check_ply_body(path, text, std::size_t(body), format, elements);
+      return;
+    }
     if(keyword == "element") {
-      element_seen = true;
       std::string name, count;
       if(!(iss >> name >> count)) return; // CGAL refuses the line
-      element_name = name;
       const std::string element = "header line " + std::to_string(number);
       if(count[0] == '-')
         throw Input_error(path, element, "element " + printable(name) + " has a negative count " +
@@ -341,27 +483,33 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
         throw Input_error(path, element, "announces " + printable(count) + " elements " + printable(name) +
                                            ", more than a file of " + std::to_string(file_size) +
                                            " bytes can hold (truncated or corrupt)");
+      elements.push_back({name, n, number, {}});
     }
-    if(keyword == "property" && !element_seen)
+    if(keyword == "property" && elements.empty())
       throw Input_error(path, "header line " + std::to_string(number),
                         "a property declared before any element (malformed PLY header)");
+    Ply_property property;
+    if(keyword != "property" || !(iss >> property.type >> property.name)) continue;
+    if(property.type == "list") {
+      property.count_type = property.name;
+      if(!(iss >> property.type >> property.name)) return; // CGAL refuses the line
+    }
+    elements.back().properties.push_back(property);
     // CGAL reads coordinates only from float or double properties: it
     // dereferences a null pointer for any other type, a list included
     // (`property list uchar uchar y`, found by fuzz_mesh_io).
-    std::string type, name;
-    if(keyword == "property" && element_name == "vertex" && iss >> type >> name) {
-      if(type == "list") {
-        std::string item_type;
-        if(!(iss >> item_type >> name)) continue;
-        type = "list of " + item_type;
-      }
-      if((name == "x" || name == "y" || name == "z") && type != "float" && type != "float32"
-         && type != "double" && type != "float64")
-        throw Input_error(path, "header line " + std::to_string(number),
-                          "vertex coordinate " + printable(name) + " has type " + printable(type) +
-                            " (supported: float, double)");
-    }
+    const std::string& name = property.name;
+    const std::string type = property.count_type.empty() ? property.type : "list of " + property.type;
+    if(elements.back().name == "vertex" && (name == "x" || name == "y" || name == "z") && type != "float"
+       && type != "float32" && type != "double" && type != "float64")
+      throw Input_error(path, "header line " + std::to_string(number),
+                        "vertex coordinate " + printable(name) + " has type " + printable(type) +
+                          " (supported: float, double)");
   }
+  // CGAL reads the body from wherever the header ends, with uninitialized
+  // numbers when that is the end of the file.
+  if(!elements.empty())
+    throw Input_error(path, "header", "has no end_header line (truncated, or not a PLY file)");
 }
 
 // The numbers CGAL's ASCII OFF reader finds on a vertex or face line, read
