@@ -513,35 +513,29 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
 }
 
 // The numbers CGAL's ASCII OFF reader finds on a vertex or face line, read
-// as it reads them (File_scanner_OFF with IO::iformat): the line ends at
-// '#'; a number is a run of the characters [0-9.eE+-] after an optional
-// '+', converted by sscanf("%lf"), and reading stops at the first run that
-// is no number. Counting them otherwise than CGAL would miss its
-// out-of-bounds reads.
+// as it reads them (File_scanner_OFF with IO::iformat, which is operator>>
+// of std::istream for a double except on old MSVC): the line ends at '#',
+// and reading stops at the first thing that is no number ("1e", "+-5",
+// "nan", "1e999" and a byte like NUL all stop it). Counting them otherwise
+// than CGAL would miss its out-of-bounds reads.
 struct Off_number
 {
   double value;
-  std::string text; // as CGAL read it: "+-5" is "-5"
+  std::string text; // as CGAL read it
 };
 
 std::vector<Off_number> cgal_off_numbers(std::string_view line)
 {
-  line = line.substr(0, line.find('#'));
+  const std::string text(line.substr(0, line.find('#')));
+  std::istringstream in(text);
   std::vector<Off_number> numbers;
-  std::size_t i = 0;
   for(;;) {
-    while(i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if(i == line.size()) return numbers;
-    std::string run;
-    if(line[i] == '-') run += '-';
-    if(line[i] == '-' || line[i] == '+') ++i;
-    const auto in_number = [](char c) {
-      return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
-    };
-    while(i < line.size() && in_number(line[i])) run += line[i++];
+    in >> std::ws;
+    const std::streamoff begin = in.tellg();
     double value;
-    if(std::sscanf(run.c_str(), "%lf", &value) != 1) return numbers;
-    numbers.push_back({value, run});
+    if(begin < 0 || !(in >> value)) return numbers;
+    const std::streamoff end = in.eof() ? std::streamoff(text.size()) : std::streamoff(in.tellg());
+    numbers.push_back({value, text.substr(std::size_t(begin), std::size_t(end - begin))});
   }
 }
 

@@ -432,8 +432,8 @@ TEST(Fuzz_regressions, coff_keyword_ended_by_punctuation)
 // fuzz_mesh_io-crash-1a8072328a090c8af6f7c4fcdfc33a556c22e28a (mode 0x00,
 // the next rerun, 35,798 executions): a COFF vertex line `3` followed by
 // NUL bytes. CGAL's number ends at the NUL and reading stops there (one
-// number); the check counted the NULs into the number (strchr finds the
-// terminating NUL in any set of characters) and saw three.
+// number); the check, then a copy of a tokenizer CGAL uses only on old
+// MSVC, counted the NULs into the number and saw three.
 TEST(Fuzz_regressions, coff_vertex_line_with_nul_bytes)
 {
   static const unsigned char input[] = {
@@ -454,6 +454,24 @@ TEST(Fuzz_regressions, coff_vertex_line_with_nul_bytes)
   ASSERT_EQ(fuzz.extension, ".off");
   EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
             fuzz.path + ": vertex 1: line 4: 1 number, fewer than the 3 its header announces");
+}
+
+// fuzz_mesh_io-crash-8a84093e53a5e49b4862a8cb4cc659bb2892eb13 (mode 0x00,
+// the rerun after the PLY fix): a COFF face `0 1EGAs...` after a face with
+// a colour index. The check took "1E" for 1 (sscanf does) where CGAL's
+// std::istream reads no number: no colour, read past the end.
+TEST(Fuzz_regressions, coff_face_number_with_a_dangling_exponent)
+{
+  static const unsigned char input[] = {
+    0x00, 0x43, 0x4f, 0x46, 0x46, 0x0a, 0x30, 0x20, 0x32, 0x20, 0x30, 0x30, 0x0a, 0x30, 0x20, 0x31,
+    0xd3, 0x47, 0x41, 0x73, 0xf5, 0xdc, 0xac, 0x85, 0xb8, 0x9e, 0x8c, 0x63, 0x2f, 0x32, 0x20, 0x30,
+    0x30, 0x0a, 0x30, 0x20, 0x31, 0x45, 0x47, 0x41, 0x73, 0xf5, 0xdc, 0xac, 0x85, 0xb8, 0x9e, 0x8c,
+    0x63, 0x2f, 0x69, 0x69,
+  };
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": face 1: line 4: no colour, but an earlier line of this COFF file has one");
 }
 
 namespace {
@@ -499,9 +517,10 @@ TEST(Fuzz_regressions, coff_colour_lines_cgal_would_overrun)
             "truncated: the file ends after 1 of 2 faces");
   EXPECT_EQ(off_message(header + "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 0.5 0.5 0.5\nx\n"),
             "face 1: line 8: no corner count");
-  // CGAL skips a '+' before a number: "+-5" is a corner count of -5.
-  EXPECT_EQ(off_message("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n+-5 0 1 2\n"),
-            "face 0: line 6: corner count \"-5\" is not a non-negative integer");
+  // std::istream reads "1e" as no number, which stops the line, as in CGAL:
+  // the second face has no colour after the first had one.
+  EXPECT_EQ(off_message(header + "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 1\n3 0 2 3 1e\n"),
+            "face 1: line 8: no colour, but an earlier line of this COFF file has one");
 }
 
 // Well-formed coloured files still read: vertex colours as integers,
