@@ -494,13 +494,23 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
       property.count_type = property.name;
       if(!(iss >> property.type >> property.name)) return; // CGAL refuses the line
     }
+    // CGAL looks a property up by name and asserts (or, in Release,
+    // dereferences a null pointer) when the first of that name is not of
+    // the type it expects.
+    for(const Ply_property& earlier : elements.back().properties)
+      if(earlier.name == property.name)
+        throw Input_error(path, "header line " + std::to_string(number),
+                          "property " + printable(property.name) + " declared twice in element " +
+                            printable(elements.back().name));
     elements.back().properties.push_back(property);
     // CGAL reads coordinates only from float or double properties: it
     // dereferences a null pointer for any other type, a list included
-    // (`property list uchar uchar y`, found by fuzz_mesh_io).
+    // (`property list uchar uchar y` of an element `vertex`, or `vertices`
+    // which CGAL reads alike, found by fuzz_mesh_io).
     const std::string& name = property.name;
     const std::string type = property.count_type.empty() ? property.type : "list of " + property.type;
-    if(elements.back().name == "vertex" && (name == "x" || name == "y" || name == "z") && type != "float"
+    const bool vertex = elements.back().name == "vertex" || elements.back().name == "vertices";
+    if(vertex && (name == "x" || name == "y" || name == "z") && type != "float"
        && type != "float32" && type != "double" && type != "float64")
       throw Input_error(path, "header line " + std::to_string(number),
                         "vertex coordinate " + printable(name) + " has type " + printable(type) +

@@ -631,3 +631,26 @@ TEST(Fuzz_regressions, ply_list_counts_checked_before_cgal)
   mpm_test::write_bytes(path, header + "3 0 1 2\n");
   EXPECT_EQ(read_mesh_file(path).mesh.number_of_faces(), 1);
 }
+
+// fuzz_mesh_io-crash-c7b0225ebaa07d49ea5eda98dd3ee7034031995e (the last
+// rerun, 1,440,404 executions; 1,055 bytes, given here in its smallest
+// form): CGAL reads an element `vertices` as it reads `vertex`, so a
+// coordinate declared as a list there failed CGAL's assertion that it is a
+// float. And a property declared twice: CGAL finds one by its type, then
+// reads the first by its name.
+TEST(Fuzz_regressions, ply_vertices_element_and_duplicate_properties)
+{
+  Scratch_directory dir;
+  const std::string path = dir.file("m.ply");
+  mpm_test::write_bytes(path, "ply\nformat ascii 1.0\nelement vertices 1\nproperty float x\n"
+                              "property list uchar float y\nproperty float z\nelement face 0\n"
+                              "property list uchar int vertex_indices\nend_header\n0 1 0 0\n");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
+            path + ": header line 5: vertex coordinate \"y\" has type \"list of float\" (supported: float, double)");
+  mpm_test::write_bytes(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nelement face 1\nproperty list uchar uchar vertex_indices\n"
+                              "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                              "3 0 1 2 3 0 1 2\n");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
+            path + ": header line 9: property \"vertex_indices\" declared twice in element \"face\"");
+}
