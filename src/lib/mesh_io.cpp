@@ -121,6 +121,8 @@ public:
   }
 
   std::size_t position() const { return pos_; }
+  // Skips the character at the current position (even a '#').
+  void skip_character() { if(pos_ < text_.size()) ++pos_; }
   void disable_comments() { comments_ = false; }
 
 private:
@@ -230,6 +232,10 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
     }
   }
   const bool keyword = t.text.size() >= 3 && t.text.substr(t.text.size() - 3) == "OFF";
+  // CGAL consumes the character that ends the keyword, so a '#' right
+  // after it starts no comment: `COFF#3 2 0` announces 3 vertices.
+  if(keyword && after_keyword_character.empty() && s.position() < text.size() && text[s.position()] == '#')
+    s.skip_character();
   if(keyword) {
     std::string_view prefix = t.text.substr(0, t.text.size() - 3);
     const auto take = [&prefix](std::string_view flag) {

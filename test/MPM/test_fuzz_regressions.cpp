@@ -654,3 +654,23 @@ TEST(Fuzz_regressions, ply_vertices_element_and_duplicate_properties)
   EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
             path + ": header line 9: property \"vertex_indices\" declared twice in element \"face\"");
 }
+
+// fuzz_mesh_io-crash-6331771133f668c0e5b88a554aa1fb1cc2e11a4c (mode 0x00,
+// 303,491 executions into the rerun after the fix above): `COFF#3 2 `.
+// CGAL consumes the character that ends the keyword, so `#` starts no
+// comment and the counts follow it; the check took the rest of the line
+// for a comment, read other counts and missed a colour component of 101
+// in a fractional colour (101 * 255 cast to unsigned char).
+TEST(Fuzz_regressions, coff_keyword_ended_by_a_hash)
+{
+  static const unsigned char input[] = {
+    0x00, 0x43, 0x4f, 0x46, 0x46, 0x23, 0x33, 0x20, 0x32, 0x20, 0x0a, 0x30, 0x20, 0x31, 0x20, 0x37,
+    0x20, 0x32, 0x20, 0x30, 0x2e, 0x31, 0x31, 0x31, 0x31, 0x0c, 0x31, 0x30, 0x31, 0x20, 0x31, 0x20,
+    0x2b, 0x57, 0x69,
+  };
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": vertex 0: line 2: colour component \"101\" is out of range (0 to 255, or 0 to 1 when not "
+                        "all are integers)");
+}
