@@ -251,6 +251,12 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
   if(!after_keyword_character.empty()) {
     Token nv = t, nf, ne;
     nv.text = after_keyword_character;
+    // Refused before looking further: CGAL would read `OFF(BINARY` as a
+    // binary header (found by fuzz_mesh_io: its counts escaped this check).
+    if(!parse_integer(nv.text, h.vertices)) {
+      h.bad_count = "the vertex count " + printable(nv.text) + " is not a non-negative integer";
+      return false;
+    }
     if(!s.next(nf)) return false;
     const bool has_edges = s.next(ne);
     return parse_off_counts(nv, nf, has_edges ? &ne : nullptr, true, h);

@@ -674,3 +674,21 @@ TEST(Fuzz_regressions, coff_keyword_ended_by_a_hash)
             fuzz.path + ": vertex 0: line 2: colour component \"101\" is out of range (0 to 255, or 0 to 1 when not "
                         "all are integers)");
 }
+
+// fuzz_mesh_io-crash-f5453c7e078a924f51de0e419c50c94caef7c2e0 (mode 0x8c:
+// .off, read_mesh_file only; 178,990 executions into the last rerun):
+// `OFF(BINARY`, then comment-like lines holding big-endian counts. CGAL
+// reads a binary header behind the punctuation; the check looked for the
+// face count first, found none and let CGAL reserve for 5.4e9 half-edges
+// (an int overflow, then bad_alloc).
+TEST(Fuzz_regressions, off_binary_keyword_behind_punctuation)
+{
+  static const unsigned char input[] = {
+    0x8c, 0x4f, 0x46, 0x46, 0x28, 0x42, 0x49, 0x4e, 0x41, 0x52, 0x59, 0x0a, 0x23, 0x31, 0x3e, 0x01,
+    0x75, 0x0a, 0x23, 0x31, 0x3e, 0xfe, 0xff, 0xff, 0xfe, 0x01, 0x75, 0x01, 0x75, 0x23,
+  };
+  const Mesh_fuzz_case fuzz(input, sizeof input);
+  ASSERT_EQ(fuzz.extension, ".off");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
+            fuzz.path + ": header: the vertex count \"BINARY\" is not a non-negative integer");
+}
