@@ -199,12 +199,16 @@ std::string edge_count_problem(std::string_view token)
 // The vertex, face and edge counts as tokens (`edges` null when the file
 // ends before it); `keyword`: the header started with an OFF keyword, so a
 // vertex count that is no integer is a broken header, not another format.
+bool parse_vertex_count(std::string_view vertices, bool keyword, Off_header& h)
+{
+  if(parse_integer(vertices, h.vertices)) return true;
+  if(keyword) h.bad_count = "the vertex count " + printable(vertices) + " is not a non-negative integer";
+  return false;
+}
+
 bool parse_off_counts(const Token& vertices, const Token& faces, const Token* edges, bool keyword, Off_header& h)
 {
-  if(!parse_integer(vertices.text, h.vertices)) {
-    if(keyword) h.bad_count = "the vertex count " + printable(vertices.text) + " is not a non-negative integer";
-    return false;
-  }
+  if(!parse_vertex_count(vertices.text, keyword, h)) return false;
   if(!parse_integer(faces.text, h.faces)) {
     h.bad_count = "the face count " + printable(faces.text) + " is not a non-negative integer";
     return false;
@@ -253,11 +257,7 @@ bool parse_off_header(std::string_view text, Off_header& h, Text_scanner& s)
     nv.text = after_keyword_character;
     // Refused before looking further: CGAL would read `OFF(BINARY` as a
     // binary header (found by fuzz_mesh_io: its counts escaped this check).
-    if(!parse_integer(nv.text, h.vertices)) {
-      h.bad_count = "the vertex count " + printable(nv.text) + " is not a non-negative integer";
-      return false;
-    }
-    if(!s.next(nf)) return false;
+    if(!parse_vertex_count(nv.text, true, h) || !s.next(nf)) return false;
     const bool has_edges = s.next(ne);
     return parse_off_counts(nv, nf, has_edges ? &ne : nullptr, true, h);
   }
@@ -342,7 +342,6 @@ struct Ply_element
 {
   std::string name;
   unsigned long long count = 0;
-  int line = 0;
   std::vector<Ply_property> properties;
 };
 
@@ -495,7 +494,7 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
         throw Input_error(path, element, "announces " + printable(count) + " elements " + printable(name) +
                                            ", more than a file of " + std::to_string(file_size) +
                                            " bytes can hold (truncated or corrupt)");
-      elements.push_back({name, n, number, {}});
+      elements.push_back({name, n, {}});
     }
     if(keyword == "property" && elements.empty())
       throw Input_error(path, "header line " + std::to_string(number),
