@@ -6,8 +6,7 @@
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh/IO/PLY.h>
+#include <CGAL/IO/PLY/PLY_reader.h>
 
 #include <Eigen/Geometry>
 
@@ -27,6 +26,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <type_traits>
 #include <unordered_map>
 
 namespace CGAL {
@@ -336,6 +336,7 @@ struct Ply_property
 {
   std::string name, type; // the item type of a list
   std::string count_type; // empty for a scalar
+  int line = 0;           // in the header
 };
 
 struct Ply_element
@@ -452,6 +453,38 @@ void check_ply_body(const std::string& path, const std::string& text, std::size_
   }
 }
 
+// CGAL's polygon-soup PLY reader reads a few properties with a fixed type
+// and, when the property of that name has another, fails an assertion (in
+// Release, dereferences a null pointer): the colours of a vertex or face
+// element as uchar, once `red` (or `r`) and its two companions include a
+// uchar each, and the `source` and `target` of a `halfedge` element as uint.
+void check_ply_fixed_types(const std::string& path, const Ply_element& e)
+{
+  const auto find = [&e](const std::string& name) -> const Ply_property* {
+    for(const Ply_property& p : e.properties)
+      if(p.name == name && read_by_cgal(p)) return &p;
+    return nullptr;
+  };
+  const bool vertex_or_face = e.name == "vertex" || e.name == "vertices" || e.name == "face" || e.name == "faces";
+  const std::string type = vertex_or_face ? "uchar" : "uint", alias = vertex_or_face ? "uint8" : "uint32";
+  const auto typed = [&](const std::string& name) {
+    const Ply_property* p = find(name);
+    return p != nullptr && p->count_type.empty() && (p->type == type || p->type == alias);
+  };
+  std::vector<std::string> fixed;
+  if(vertex_or_face && (typed("red") || typed("r")) && (typed("green") || typed("g")) && (typed("blue") || typed("b")))
+    fixed = typed("red") ? std::vector<std::string>{"red", "green", "blue"} : std::vector<std::string>{"r", "g", "b"};
+  if(e.name == "halfedge") fixed = {"source", "target"};
+  for(const std::string& name : fixed) {
+    const Ply_property* p = find(name);
+    if(p != nullptr && !typed(name))
+      throw Input_error(path, "header line " + std::to_string(p->line),
+                        "property " + printable(name) + " of element " + printable(e.name) + " has type " +
+                          printable(p->count_type.empty() ? p->type : "list of " + p->type) + " (CGAL reads it as " +
+                          type + ")");
+  }
+}
+
 // CGAL's PLY header reader attaches each `property` line to the last
 // `element` and has undefined behaviour (back() of an empty vector) for a
 // property before any element; it reads an element count as std::size_t,
@@ -476,6 +509,7 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
     if(number <= 2) continue;
     if(!(iss >> keyword)) return;
     if(keyword == "end_header") {
+      for(const Ply_element& e : elements) check_ply_fixed_types(path, e);
       const std::streamoff body = in.tellg();
       if(body >= 0) check_ply_body(path, text, std::size_t(body), format, elements);
       return;
@@ -500,6 +534,7 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
       throw Input_error(path, "header line " + std::to_string(number),
                         "a property declared before any element (malformed PLY header)");
     Ply_property property;
+    property.line = number;
     if(keyword != "property" || !(iss >> property.type >> property.name)) continue;
     if(property.type == "list") {
       property.count_type = property.name;
@@ -886,46 +921,91 @@ Mesh_file mesh_from_polygons(const std::string& path, const std::vector<Point_3>
   return r;
 }
 
-// Face labels stored as an integer face property of a PLY file, in file face order.
+// Calls `f` with a value of each C++ type CGAL's PLY reader gives a scalar
+// property (double also stands for float: PLY_element reads both as double).
+template <typename F>
+void for_each_ply_scalar_type(F f)
+{
+  f(std::int8_t()), f(std::uint8_t()), f(std::int16_t()), f(std::uint16_t()), f(std::int32_t()), f(std::uint32_t()),
+    f(double());
+}
+
+// Whether `e` has a scalar (not list) property `name`, and whether it is
+// floating-point.
+bool has_ply_scalar(CGAL::IO::internal::PLY_element& e, const std::string& name, bool& floating)
+{
+  bool found = false;
+  for_each_ply_scalar_type([&](auto tag) {
+    if(found || !e.template has_property<decltype(tag)>(name.c_str())) return;
+    found = true;
+    floating = std::is_floating_point<decltype(tag)>::value;
+  });
+  return found;
+}
+
+// The integer scalar property `name` of the item of `e` read last.
+std::intmax_t ply_integer(CGAL::IO::internal::PLY_element& e, const std::string& name)
+{
+  std::intmax_t value = 0;
+  for_each_ply_scalar_type([&](auto tag) {
+    using T = decltype(tag);
+    if constexpr(std::is_integral<T>::value)
+      if(e.template has_property<T>(name.c_str())) {
+        T v;
+        e.assign(v, name.c_str());
+        value = std::intmax_t(v);
+      }
+  });
+  return value;
+}
+
+// Face labels stored as an integer face property of a PLY file, in file face
+// order. Read with the PLY element reader behind CGAL's PLY readers, after
+// check_ply_header() and check_ply_body() accepted the file. CGAL's
+// Surface_mesh PLY reader is not used: it needs a manifold mesh, and an
+// `edge` or `halfedge` element makes it branch on a flag it never set (found
+// by fuzz_mesh_io) and index its vertex table with unchecked file values.
 std::vector<int> read_ply_face_property(const std::string& path, const std::string& name)
 {
   if(lower_extension(path) != ".ply")
     throw Input_error(path, "", "face property labels (property:" + name + ") need a PLY file");
-  CGAL::Surface_mesh<Point_3> sm;
   std::ifstream in(path, std::ios::in | std::ios::binary);
-  if(!in || !CGAL::IO::read_PLY(in, sm))
-    throw Input_error(path, "", "CGAL's Surface_mesh PLY reader cannot read the file, which it needs "
-                                "for face property \"" + name + "\" (is the mesh manifold?)");
-  const std::string key = "f:" + name;
+  CGAL::IO::internal::PLY_reader reader(false);
+  if(!in || !reader.init(in))
+    throw Input_error(path, "", "cannot be read as ply (for face property \"" + name + "\")");
   std::vector<int> labels;
-  using F = CGAL::Surface_mesh<Point_3>::Face_index;
-  auto copy = [&](auto tag) {
-    using T = decltype(tag);
-    auto found = sm.template property_map<F, T>(key);
-    if(!found.second) return false;
-    for(F f : sm.faces()) {
-      const auto value = found.first[f];
+  for(std::size_t i = 0; i < reader.number_of_elements(); ++i) {
+    CGAL::IO::internal::PLY_element& e = reader.element(i);
+    const bool face = e.name() == "face" || e.name() == "faces";
+    bool floating = false;
+    if(face && !has_ply_scalar(e, name, floating)) {
+      std::string available;
+      for(std::size_t k = 0; k < e.number_of_properties(); ++k) {
+        bool unused;
+        if(has_ply_scalar(e, e.property(k)->name(), unused))
+          available += (available.empty() ? "" : ", ") + e.property(k)->name();
+      }
+      throw Input_error(path, "", "has no face property \"" + name + "\" (face properties: " +
+                                    (available.empty() ? "none" : available) + ")");
+    }
+    if(floating)
+      throw Input_error(path, "", "face property \"" + name + "\" holds floating-point values, not integer labels");
+    for(std::size_t item = 0; item < e.number_of_items(); ++item) {
+      for(std::size_t k = 0; k < e.number_of_properties(); ++k) e.property(k)->get(in);
+      if(!in)
+        throw Input_error(path, "element " + printable(e.name()) + " " + std::to_string(item),
+                          "cannot be read (truncated or corrupt file)");
+      if(!face) continue;
+      const std::intmax_t value = ply_integer(e, name);
       if(value < 0)
         throw Input_error(path, face_name(int(labels.size())),
                           "negative label " + std::to_string(value) + " in face property \"" + name + "\"");
-      if(std::uintmax_t(value) > std::uintmax_t(std::numeric_limits<int>::max()))
-        throw Input_error(path, face_name(int(labels.size())), "label " + std::to_string(value) +
-                                                                   " is too large");
+      if(value > std::numeric_limits<int>::max())
+        throw Input_error(path, face_name(int(labels.size())), "label " + std::to_string(value) + " is too large");
       labels.push_back(int(value));
     }
-    return true;
-  };
-  if(copy(std::int8_t()) || copy(std::uint8_t()) || copy(std::int16_t()) || copy(std::uint16_t())
-     || copy(std::int32_t()) || copy(std::uint32_t()))
-    return labels;
-  if(sm.property_map<F, float>(key).second || sm.property_map<F, double>(key).second)
-    throw Input_error(path, "", "face property \"" + name + "\" holds floating-point values, not integer labels");
-  std::string available;
-  for(const std::string& p : sm.properties<F>())
-    if(p.rfind("f:", 0) == 0 && p != "f:connectivity" && p != "f:removed")
-      available += (available.empty() ? "" : ", ") + p.substr(2);
-  throw Input_error(path, "", "has no face property \"" + name + "\" (face properties: " +
-                                (available.empty() ? "none" : available) + ")");
+  }
+  return labels;
 }
 
 } // namespace

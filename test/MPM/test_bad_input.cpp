@@ -376,6 +376,13 @@ TEST(BadInput, NonManifoldEdgesAreAcceptedAndStayFinite)
   const std::string text = "OFF\n5 3 0\n" + triangle_vertices + "0.3 0.3 1\n0.3 0.3 -1\n3 0 1 2\n3 0 1 3\n3 1 0 4\n";
   write_bytes(dir.file("fin.off"), text);
   EXPECT_EQ(read_mesh_file(dir.file("fin.off")).mesh.number_of_faces(), 3);
+  // Labels from a PLY face property as well (once read by CGAL's
+  // Surface_mesh reader, which refused such a mesh).
+  write_bytes(dir.file("fin.ply"), "ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\n"
+                                   "property double z\nelement face 3\nproperty list uchar int vertex_indices\n"
+                                   "property int part\nend_header\n0 0 0\n1 0 0\n0 1 0\n0.3 0.3 1\n0.3 0.3 -1\n"
+                                   "3 0 1 2 5\n3 0 1 3 6\n3 1 0 4 7\n");
+  EXPECT_EQ(read_labeled_mesh(dir.file("fin.ply"), "property:part").face_labels, (std::vector<int>{5, 6, 7}));
 
   // A fin on an interior edge of part 0: three triangles share edge 1-11.
   Labeled_mesh lm = two_tiles();

@@ -692,3 +692,37 @@ TEST(Fuzz_regressions, off_binary_keyword_behind_punctuation)
   EXPECT_EQ(input_error_message([&] { read_mesh_file(fuzz.path); }),
             fuzz.path + ": header: the vertex count \"BINARY\" is not a non-negative integer");
 }
+
+// fuzz_mesh_io-crash-39f60937b1732693827ad7a19d456e82c3f1958e (mode 0x0a:
+// .ply, labels from face property `label`; 519,417 executions into a
+// rerun): CGAL's Surface_mesh PLY reader, then used for property labels,
+// chose the index type of a `halfedge` or `edge` element from a flag only a
+// face element sets (UBSan: a bool holding 175) and looked the indices up
+// in its vertex table unchecked. Labels are now read with CGAL's PLY
+// element reader alone. Its polygon-soup reader reads a halfedge's source
+// and target as uint and colours as uchar, and asserts (Release:
+// dereferences a null pointer) on any other type; those are refused.
+TEST(Fuzz_regressions, ply_property_labels_beside_edge_elements)
+{
+  Scratch_directory dir;
+  const std::string path = dir.file("m.ply");
+  const std::string vertices = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string faces = "element face 1\nproperty list uchar int vertex_indices\nproperty uchar label\n";
+  const auto halfedges = [](const std::string& type) {
+    return "element halfedge 2\nproperty " + type + " source\nproperty uint target\n";
+  };
+  const std::string edges = "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+  const std::string body = "0 0 0\n1 0 0\n0 1 0\n7 1000000\n5 2\n3 0 1 2 6\n99 -99\n";
+  mpm_test::write_bytes(path, "ply\nformat ascii 1.0\n" + vertices + halfedges("uint") + faces + edges + body);
+  EXPECT_EQ(read_labeled_mesh(path, "property:label").face_labels, std::vector<int>{6});
+
+  mpm_test::write_bytes(path, "ply\nformat ascii 1.0\n" + vertices + halfedges("int") + faces + edges + body);
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
+            path + ": header line 8: property \"source\" of element \"halfedge\" has type \"int\" (CGAL reads it as uint)");
+
+  mpm_test::write_bytes(path, "ply\nformat ascii 1.0\n" + vertices + "property uchar red\nproperty float green\n"
+                              "property uchar g\nproperty uchar b\n" + faces + "end_header\n"
+                              "0 0 0 1 0.5 1 1\n1 0 0 1 0.5 1 1\n0 1 0 1 0.5 1 1\n3 0 1 2 6\n");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
+            path + ": header line 8: property \"green\" of element \"vertex\" has type \"float\" (CGAL reads it as uchar)");
+}
