@@ -510,8 +510,10 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
     if(!(iss >> keyword)) return;
     if(keyword == "end_header") {
       for(const Ply_element& e : elements) check_ply_fixed_types(path, e);
+      // An `end_header` that ends the file (no line break) leaves the
+      // stream at its end, where tellg() fails; the body is then empty.
       const std::streamoff body = in.tellg();
-      if(body >= 0) check_ply_body(path, text, std::size_t(body), format, elements);
+      check_ply_body(path, text, body >= 0 ? std::size_t(body) : text.size(), format, elements);
       return;
     }
     if(keyword == "element") {

@@ -726,3 +726,18 @@ TEST(Fuzz_regressions, ply_property_labels_beside_edge_elements)
   EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
             path + ": header line 8: property \"green\" of element \"vertex\" has type \"float\" (CGAL reads it as uchar)");
 }
+
+// fuzz_mesh_io-oom-85fb8f9326ea9e2a8014eaedcbf2d5d1dd51c8c0 (mode 0x0a;
+// 858,740 executions into the rerun after the fix above; 1,247 bytes, given
+// here in its smallest form): a header whose `end_header` ends the file,
+// without a line break. The body check asked the stream where the body
+// starts, got -1 (the stream was at its end) and skipped the body; CGAL
+// then read a list count from nothing and asked for 10.6 GB.
+TEST(Fuzz_regressions, ply_end_header_at_the_end_of_the_file)
+{
+  Scratch_directory dir;
+  const std::string path = dir.file("m.ply");
+  mpm_test::write_bytes(path, "ply\nformat ascii 1.0\nelement vertex 1\nproperty list uint int in\nend_header");
+  EXPECT_EQ(input_error_message([&] { read_mesh_file(path); }),
+            path + ": element \"vertex\" 0: truncated: the file ends in its property \"in\"");
+}
