@@ -111,7 +111,14 @@ Loop make_loop(const Point_matrix& points, std::vector<int> vertices)
   for(int i = 0; i < k; ++i) l.points.row(i) = points.row(l.vertices[i]);
   l.arc.assign(1, 0.);
   for(int i = 0; i < k; ++i) l.arc.push_back(l.arc.back() + (l.points.row((i + 1) % k) - l.points.row(i)).norm());
-  l.centroid = l.points.colwise().mean().transpose();
+  // The centroid of the polyline, not of its vertices: a remeshed or
+  // scanned seam is sampled unevenly, and the vertex mean then drifts
+  // towards the dense side, which tilts the axis and turns the lean of a
+  // slightly tilted seam by 10 degrees or more.
+  l.centroid.setZero();
+  for(int i = 0; i < k; ++i)
+    l.centroid += 0.5 * (l.points.row(i) + l.points.row((i + 1) % k)).transpose() * (l.arc[i + 1] - l.arc[i]);
+  if(l.arc.back() > 0) l.centroid /= l.arc.back();
   return l;
 }
 
