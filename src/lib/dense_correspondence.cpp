@@ -234,40 +234,125 @@ bool tags_agree(const Surface& t, const Surface& s, const std::vector<int>& perm
   return true;
 }
 
-// Where a loop's plane leans away from the segment's axis (towards
-// `axis_point`), as a point at the loop's radius from its centroid: the
-// mitred joint of a bent tube tilts its seam towards the bend, which fixes
-// the twist that circular seams leave open. Leans under about 6 degrees
-// count less, none (the centroid itself) says nothing.
-Vec3 tilt_point(const Loop& l, const Vec3& axis_point, int orientation)
+// How far a loop's plane leans away from the segment's axis (towards
+// `axis_point`): the component of its unit normal across the axis, about
+// the sine of the lean angle.
+Vec3 lean_of(const Loop& l, const Vec3& axis_point, int orientation)
 {
   Vec3 normal = Vec3::Zero();
   const Eigen::Index k = l.points.rows();
   for(Eigen::Index i = 0; i < k; ++i)
     normal += (l.points.row(i).transpose() - l.centroid).cross(l.points.row((i + 1) % k).transpose() - l.centroid);
   const Vec3 axis = axis_point - l.centroid;
-  if(!(normal.norm() > 0) || !(axis.norm() > 0)) return l.centroid;
+  if(!(normal.norm() > 0) || !(axis.norm() > 0)) return Vec3::Zero();
   normal.normalize();
   const Vec3 a = axis.normalized();
-  const Vec3 lean = orientation * (normal - normal.dot(a) * a);
+  return orientation * (normal - normal.dot(a) * a);
+}
+
+// Where a loop's plane leans away from the segment's axis, as a point at
+// the loop's radius from its centroid: the mitred joint of a bent tube
+// tilts its seam towards the bend, which fixes the twist that circular
+// seams leave open. Leans under about 6 degrees count less, none (the
+// centroid itself) says nothing.
+Vec3 tilt_point(const Loop& l, const Vec3& axis_point, int orientation)
+{
+  const Vec3 lean = lean_of(l, axis_point, orientation);
   if(!(lean.norm() > 1e-6)) return l.centroid;
   const double radius = (l.points.rowwise() - l.centroid.transpose()).rowwise().norm().mean();
   return l.centroid + radius * std::min(1., lean.norm() / 0.1) * lean.normalized();
 }
 
-// The tip of a segment with one loop (a fingertip): the vertex farthest
-// along the axis from the loop's centroid towards the area centroid. On a
-// round cap this is better defined than the vertex geodesically farthest
-// from a tilted seam.
-int pole_of(const Surface& s)
+// The tip of a segment with one loop (a fingertip): the surface point
+// farthest along the axis from the loop's centroid towards the area
+// centroid. On a round cap this is better defined than the vertex
+// geodesically farthest from a tilted seam. The farthest vertex alone is
+// off the tip by up to half an edge, which tilts a long tube; the centroid
+// of the top slice (a fifth of the seam's radius deep), put back on the
+// surface, is not.
+Vec3 pole_of(const Surface& s)
 {
-  const Vec3 c = s.loops[0].centroid;
+  const Loop& loop = s.loops[0];
+  const Vec3 c = loop.centroid;
   const Vec3 axis = (s.area_centroid - c).normalized();
-  int best = 0;
-  for(Eigen::Index v = 0; v < s.mesh.points.rows(); ++v)
-    if((s.mesh.points.row(v).transpose() - c).dot(axis) > (s.mesh.points.row(best).transpose() - c).dot(axis))
-      best = static_cast<int>(v);
-  return best;
+  const Eigen::VectorXd height = (s.mesh.points.rowwise() - c.transpose()) * axis;
+  const double radius = (loop.points.rowwise() - c.transpose()).rowwise().norm().mean();
+  const double top = height.maxCoeff() - 0.2 * radius;
+  Vec3 sum = Vec3::Zero();
+  double area = 0.;
+  for(const Triangle& t : s.mesh.triangles)
+  {
+    if(height(t[0]) + height(t[1]) + height(t[2]) < 3. * top) continue;
+    const Vec3 a = s.mesh.points.row(t[0]), b = s.mesh.points.row(t[1]), d = s.mesh.points.row(t[2]);
+    const double w = 0.5 * (b - a).cross(d - a).norm();
+    sum += w * (a + b + d) / 3.;
+    area += w;
+  }
+  if(!(area > 0))
+  {
+    Eigen::Index best;
+    height.maxCoeff(&best);
+    return s.mesh.points.row(best).transpose();
+  }
+  return s.closest(sum / area);
+}
+
+// Where the cap of a one-loop segment turns towards its tip: the line on
+// which the surface normal makes the angle acos(cosine) with the axis (from
+// the loop's centroid to `pole`), in the half nearer the tip, traced
+// across the triangles (linear in the vertex normals) so that it does not
+// depend on the sampling. Its centre and mean radius; `found` is false
+// when the surface has no such line there (a flat or pointed end).
+struct Cap_ring
+{
+  bool found = false;
+  Vec3 axis = Vec3::UnitZ(), centre = Vec3::Zero();
+  double radius = 0.;
+};
+
+Cap_ring cap_ring(const Surface& x, const Vec3& pole, double cosine)
+{
+  Cap_ring ring;
+  const Vec3 c = x.loops[0].centroid;
+  const double length = (pole - c).norm();
+  if(!(length > 0)) return ring;
+  ring.axis = (pole - c) / length;
+  std::vector<Vec3> normals(x.mesh.number_of_vertices(), Vec3::Zero());
+  for(const Triangle& f : x.mesh.triangles)
+  {
+    const Vec3 a = x.mesh.points.row(f[0]), b = x.mesh.points.row(f[1]), d = x.mesh.points.row(f[2]);
+    const Vec3 n = (b - a).cross(d - a);
+    for(int k = 0; k < 3; ++k) normals[f[k]] += n;
+  }
+  std::vector<double> value(normals.size());
+  for(std::size_t v = 0; v < normals.size(); ++v)
+    value[v] = normals[v].norm() > 0 ? normals[v].normalized().dot(ring.axis) - cosine : -1.;
+  double total = 0., height = 0., radius = 0.;
+  for(const Triangle& f : x.mesh.triangles)
+  {
+    Vec3 ends[2];
+    int found = 0;
+    for(int k = 0; k < 3 && found < 2; ++k)
+    {
+      const int i = f[k], j = f[(k + 1) % 3];
+      if((value[i] < 0) == (value[j] < 0)) continue;
+      const double t = value[i] / (value[i] - value[j]);
+      ends[found++] = (1. - t) * x.mesh.points.row(i).transpose() + t * x.mesh.points.row(j).transpose();
+    }
+    if(found < 2) continue;
+    const Vec3 mid = 0.5 * (ends[0] + ends[1]) - c;
+    const double h = mid.dot(ring.axis);
+    if(h < 0.5 * length) continue;
+    const double w = (ends[1] - ends[0]).norm();
+    total += w;
+    height += w * h;
+    radius += w * (mid - h * ring.axis).norm();
+  }
+  if(!(total > 0)) return ring;
+  ring.found = true;
+  ring.centre = c + (height / total) * ring.axis;
+  ring.radius = radius / total;
+  return ring;
 }
 
 // How a template loop maps onto a segment loop: template parameter u goes
@@ -363,12 +448,8 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
   };
   std::vector<Candidate> candidates;
 
-  int extremity_t = -1, extremity_s = -1;
-  if(loops == 1)
-  {
-    extremity_t = pole_of(t);
-    extremity_s = pole_of(s);
-  }
+  const bool extremity = loops == 1;
+  const Vec3 extremity_t = extremity ? pole_of(t) : Vec3::Zero(), extremity_s = extremity ? pole_of(s) : Vec3::Zero();
   const int extremity_weight = std::max(1, samples / 4);
 
   std::vector<Point_matrix> template_samples;
@@ -414,10 +495,10 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     }
     std::vector<Point_matrix> extra_src, extra_tgt, tilt_src, tilt_tgt;
     if(tilt) add_tilt(c.loops[0], 0, permutation, tilt_src, tilt_tgt);
-    if(extremity_t >= 0)
+    if(extremity)
     {
-      extra_src.push_back(repeated(t.mesh.points.row(extremity_t).transpose(), extremity_weight));
-      extra_tgt.push_back(repeated(s.mesh.points.row(extremity_s).transpose(), extremity_weight));
+      extra_src.push_back(repeated(extremity_t, extremity_weight));
+      extra_tgt.push_back(repeated(extremity_s, extremity_weight));
     }
     extra_src.insert(extra_src.end(), user_src_w.begin(), user_src_w.end());
     extra_tgt.insert(extra_tgt.end(), user_tgt_w.begin(), user_tgt_w.end());
@@ -528,17 +609,50 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
   for(std::size_t i = 0; i < candidates.size(); ++i)
     if(score(candidates[i]) < score(candidates[best])) best = i;
   Candidate chosen = candidates[best];
-  // The coarse search resolves the twist to 1/samples of a turn; search
-  // between the neighbouring shifts at four times that resolution.
+  // The coarse search resolves the twist to 1/samples of a turn (15
+  // degrees at 24 samples); search between the neighbouring shifts at
+  // sixteen times that resolution.
+  constexpr int fine = 16;
   if(loops > 0)
   {
     std::vector<int> matched;
     for(const Loop_match& m : chosen.loops) matched.push_back(m.target);
     const Loop_match first = chosen.loops[0];
-    for(int k = -3; k <= 3; ++k)
+    for(int k = 1 - fine; k < fine; ++k)
     {
-      Candidate c = loop_candidate(matched, first.orientation, first.offset + k / (4. * samples), 4 * samples, chosen.tilt);
+      Candidate c = loop_candidate(matched, first.orientation, first.offset + k / double(fine * samples), fine * samples,
+                                   chosen.tilt);
       if(score(c) < score(chosen)) chosen = c;
+    }
+  }
+
+  // A lone seam that leans (over about 3 degrees, both ways) fixes the
+  // twist more finely than the scores above, which barely change with it:
+  // the shift, within two coarse steps, whose rigid fit (seam samples and
+  // tip, as in the final landmarks) carries the template's lean onto the
+  // segment's.
+  constexpr double usable_lean = 0.05;
+  if(loops == 1 && chosen.tilt && lean_of(t.loops[0], t.area_centroid, 1).norm() > usable_lean
+     && lean_of(s.loops[chosen.loops[0].target], s.area_centroid, 1).norm() > usable_lean)
+  {
+    const Loop_match m = chosen.loops[0];
+    const Point_matrix lean_t = tilt_point(t.loops[0], t.area_centroid, 1).transpose();
+    const Point_matrix lean_s = tilt_point(s.loops[m.target], s.area_centroid, m.orientation).transpose();
+    const auto misfit = [&](double offset) {
+      const Rigid_motion motion =
+        fit_rigid_motion(stack({template_samples[0], extremity_t.transpose()}),
+                         stack({s.loops[m.target].samples(samples, offset, m.orientation), extremity_s.transpose()}));
+      return (motion.apply(lean_t) - lean_s).norm();
+    };
+    double lowest = misfit(m.offset);
+    for(int k = -2 * fine; k <= 2 * fine; ++k)
+    {
+      const double offset = m.offset + k / double(fine * samples), d = misfit(offset);
+      if(d < lowest)
+      {
+        lowest = d;
+        chosen.loops[0].offset = offset;
+      }
     }
   }
 
@@ -556,11 +670,39 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     tgt.push_back(chosen.target);
   }
   r.automatic = loops * samples + (loops == 0 ? 7 : 0);
-  if(extremity_t >= 0)
+  if(extremity)
   {
-    src.push_back(t.mesh.points.row(extremity_t));
-    tgt.push_back(s.mesh.points.row(extremity_s));
+    src.push_back(extremity_t.transpose());
+    tgt.push_back(extremity_s.transpose());
     ++r.automatic;
+  }
+  // The seam and the tip leave the stretch along a capped segment to the
+  // regularizer, which spreads it over the cap; caps alike in shape are
+  // matched alike here: the rings where the cap turns 70 and 45 degrees
+  // from the axis, at directions carried over by the rigid fit so far.
+  if(extremity)
+  {
+    const Rigid_motion aligned = fit_rigid_motion(stack(src), stack(tgt));
+    const int n = std::max(4, samples / 2);
+    for(double cosine : {0.342, 0.707})
+    {
+      const Cap_ring rt = cap_ring(t, extremity_t, cosine), rs = cap_ring(s, extremity_s, cosine);
+      if(!rt.found || !rs.found) continue;
+      const Vec3 u = rt.axis.unitOrthogonal(), w = rt.axis.cross(u);
+      Point_matrix ring_t(n, 3), ring_s(n, 3);
+      for(int j = 0; j < n; ++j)
+      {
+        const double phi = 2. * 3.141592653589793 * j / n;
+        const Vec3 d = std::cos(phi) * u + std::sin(phi) * w;
+        Vec3 e = aligned.rotation * d;
+        e = (e - e.dot(rs.axis) * rs.axis).normalized();
+        ring_t.row(j) = t.closest(rt.centre + rt.radius * d).transpose();
+        ring_s.row(j) = s.closest(rs.centre + rs.radius * e).transpose();
+      }
+      src.push_back(ring_t);
+      tgt.push_back(ring_s);
+      r.automatic += n;
+    }
   }
   src.push_back(user_source);
   tgt.push_back(user_target);
