@@ -274,6 +274,7 @@ Vec3 pole_of(const Surface& s)
 {
   const Loop& loop = s.loops[0];
   const Vec3 c = loop.centroid;
+  if(!((s.area_centroid - c).norm() > 0)) return s.closest(c); // a flat part: no axis
   const Vec3 axis = (s.area_centroid - c).normalized();
   const Eigen::VectorXd height = (s.mesh.points.rowwise() - c.transpose()) * axis;
   const double radius = (loop.points.rowwise() - c.transpose()).rowwise().norm().mean();
