@@ -122,6 +122,9 @@ Loop make_loop(const Point_matrix& points, std::vector<int> vertices)
   return l;
 }
 
+class Surface;
+Vec3 pole_of(const Surface& s);
+
 // One segment with its search structures.
 class Surface
 {
@@ -136,6 +139,7 @@ public:
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(centred.transpose() * centred);
     if(!(pca.eigenvalues()(1) > 1e-12 * pca.eigenvalues()(2)))
       throw Input_error(name, element, "degenerate segment: its points are collinear");
+    vertex_normals.assign(std::size_t(m.number_of_vertices()), Vec3::Zero());
     for(const Triangle& t : m.triangles)
     {
       for(int k = 0; k < 3; ++k)
@@ -144,7 +148,10 @@ public:
       triangles.emplace_back(to_point(m.points.row(t[0])), to_point(m.points.row(t[1])), to_point(m.points.row(t[2])));
       const Vec3 n = (m.points.row(t[1]) - m.points.row(t[0])).transpose().cross((m.points.row(t[2]) - m.points.row(t[0])).transpose());
       normals.push_back(n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero());
+      for(int k = 0; k < 3; ++k) vertex_normals[t[k]] += n; // area-weighted
     }
+    for(Vec3& n : vertex_normals)
+      if(n.norm() > 0) n.normalize();
     tree.insert(triangles.begin(), triangles.end());
     tree.accelerate_distance_queries();
     for(std::vector<int>& vertices : loops_of(m)) loops.push_back(make_loop(m.points, std::move(vertices)));
@@ -174,6 +181,7 @@ public:
     for(const Triangle& t : m.triangles)
       for(int k = 0; k < 3; ++k) total += (m.points.row(t[k]) - m.points.row(t[(k + 1) % 3])).norm();
     edge_length = total / (3. * m.triangles.size());
+    if(loops.size() == 1) tip = pole_of(*this);
   }
 
   Vec3 closest(const Vec3& p, Vec3* normal = nullptr) const
@@ -192,7 +200,8 @@ public:
 
   const Indexed_mesh& mesh;
   std::vector<Kernel::Triangle_3> triangles;
-  std::vector<Vec3> normals;
+  std::vector<Vec3> normals;        // per triangle, unit
+  std::vector<Vec3> vertex_normals; // unit, zero at an isolated vertex
   Triangle_tree tree;
   std::vector<Loop> loops;
   struct Border
@@ -203,6 +212,7 @@ public:
   std::vector<Border> border;
   double diagonal = 0., edge_length = 0.;
   Vec3 area_centroid = Vec3::Zero();
+  Vec3 tip = Vec3::Zero();    // pole_of(), for a segment with one loop
   std::vector<int> loop_tags; // per loop, -1 unknown
 };
 
@@ -300,7 +310,7 @@ Vec3 pole_of(const Surface& s)
 
 // Where the cap of a one-loop segment turns towards its tip: the line on
 // which the surface normal makes the angle acos(cosine) with the axis (from
-// the loop's centroid to `pole`), in the half nearer the tip, traced
+// the loop's centroid to the tip), in the half nearer the tip, traced
 // across the triangles (linear in the vertex normals) so that it does not
 // depend on the sampling. Its centre and mean radius; `found` is false
 // when the surface has no such line there (a flat or pointed end).
@@ -311,23 +321,16 @@ struct Cap_ring
   double radius = 0.;
 };
 
-Cap_ring cap_ring(const Surface& x, const Vec3& pole, double cosine)
+Cap_ring cap_ring(const Surface& x, double cosine)
 {
   Cap_ring ring;
   const Vec3 c = x.loops[0].centroid;
-  const double length = (pole - c).norm();
+  const double length = (x.tip - c).norm();
   if(!(length > 0)) return ring;
-  ring.axis = (pole - c) / length;
-  std::vector<Vec3> normals(x.mesh.number_of_vertices(), Vec3::Zero());
-  for(const Triangle& f : x.mesh.triangles)
-  {
-    const Vec3 a = x.mesh.points.row(f[0]), b = x.mesh.points.row(f[1]), d = x.mesh.points.row(f[2]);
-    const Vec3 n = (b - a).cross(d - a);
-    for(int k = 0; k < 3; ++k) normals[f[k]] += n;
-  }
-  std::vector<double> value(normals.size());
-  for(std::size_t v = 0; v < normals.size(); ++v)
-    value[v] = normals[v].norm() > 0 ? normals[v].normalized().dot(ring.axis) - cosine : -1.;
+  ring.axis = (x.tip - c) / length;
+  std::vector<double> value(x.vertex_normals.size());
+  for(std::size_t v = 0; v < value.size(); ++v)
+    value[v] = x.vertex_normals[v].norm() > 0 ? x.vertex_normals[v].dot(ring.axis) - cosine : -1.;
   double total = 0., height = 0., radius = 0.;
   for(const Triangle& f : x.mesh.triangles)
   {
@@ -450,7 +453,7 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
   std::vector<Candidate> candidates;
 
   const bool extremity = loops == 1;
-  const Vec3 extremity_t = extremity ? pole_of(t) : Vec3::Zero(), extremity_s = extremity ? pole_of(s) : Vec3::Zero();
+  const Vec3 &extremity_t = t.tip, &extremity_s = s.tip;
   const int extremity_weight = std::max(1, samples / 4);
 
   std::vector<Point_matrix> template_samples;
@@ -687,7 +690,7 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     const int n = std::max(4, samples / 2);
     for(double cosine : {0.342, 0.707})
     {
-      const Cap_ring rt = cap_ring(t, extremity_t, cosine), rs = cap_ring(s, extremity_s, cosine);
+      const Cap_ring rt = cap_ring(t, cosine), rs = cap_ring(s, cosine);
       if(!rt.found || !rs.found) continue;
       const Vec3 u = rt.axis.unitOrthogonal(), w = rt.axis.cross(u);
       Point_matrix ring_t(n, 3), ring_s(n, 3);

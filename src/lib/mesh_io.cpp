@@ -332,12 +332,24 @@ std::size_t ply_type_size(const std::string& type)
   return 0;
 }
 
+// Whether a PLY type name is a floating-point one.
+bool ply_floating_type(const std::string& type)
+{
+  return type == "float" || type == "float32" || type == "double" || type == "float64";
+}
+
 struct Ply_property
 {
   std::string name, type; // the item type of a list
   std::string count_type; // empty for a scalar
   int line = 0;           // in the header
 };
+
+// A property's type as the header declares it: "float", "list of int".
+std::string ply_type_text(const Ply_property& p)
+{
+  return p.count_type.empty() ? p.type : "list of " + p.type;
+}
 
 struct Ply_element
 {
@@ -373,8 +385,7 @@ bool read_by_cgal(const Ply_property& p)
 {
   if(ply_type_size(p.type) == 0) return false;
   if(p.count_type.empty()) return true;
-  return ply_type_size(p.count_type) != 0 && p.count_type.find("float") == std::string::npos &&
-         p.count_type != "double";
+  return ply_type_size(p.count_type) != 0 && !ply_floating_type(p.count_type);
 }
 
 // Whether `token` is a number as CGAL's PLY reader reads one of `type`
@@ -382,7 +393,7 @@ bool read_by_cgal(const Ply_property& p)
 // for floating-point ones.
 bool ply_ascii_number(std::string_view token, const std::string& type, double& value)
 {
-  if(type.find("float") == std::string::npos && type != "double") {
+  if(!ply_floating_type(type)) {
     long long integer;
     if(!parse_integer(token, integer)) return false;
     value = double(integer);
@@ -480,8 +491,7 @@ void check_ply_fixed_types(const std::string& path, const Ply_element& e)
     if(p != nullptr && !typed(name))
       throw Input_error(path, "header line " + std::to_string(p->line),
                         "property " + printable(name) + " of element " + printable(e.name) + " has type " +
-                          printable(p->count_type.empty() ? p->type : "list of " + p->type) + " (CGAL reads it as " +
-                          type + ")");
+                          printable(ply_type_text(*p)) + " (CGAL reads it as " + type + ")");
   }
 }
 
@@ -556,12 +566,11 @@ void check_ply_header(const std::string& path, std::uintmax_t file_size)
     // (`property list uchar uchar y` of an element `vertex`, or `vertices`
     // which CGAL reads alike, found by fuzz_mesh_io).
     const std::string& name = property.name;
-    const std::string type = property.count_type.empty() ? property.type : "list of " + property.type;
     const bool vertex = elements.back().name == "vertex" || elements.back().name == "vertices";
-    if(vertex && (name == "x" || name == "y" || name == "z") && type != "float"
-       && type != "float32" && type != "double" && type != "float64")
+    if(vertex && (name == "x" || name == "y" || name == "z")
+       && (!property.count_type.empty() || !ply_floating_type(property.type)))
       throw Input_error(path, "header line " + std::to_string(number),
-                        "vertex coordinate " + printable(name) + " has type " + printable(type) +
+                        "vertex coordinate " + printable(name) + " has type " + printable(ply_type_text(property)) +
                           " (supported: float, double)");
   }
   // CGAL reads the body from wherever the header ends, with uninitialized
