@@ -72,22 +72,23 @@ Rigid_motion place_neighbour(const Docking_rule& rule, const Part_edge& e, int u
                              const Point_matrix& target_v)
 {
   const int side_u = e.first == u ? 0 : 1;
-  if(rule.kind == Docking_kind::boundary && !rule.merged_seam.empty())
+  const std::vector<Seam_vertex>& merged = internal::merged_seam_of(rule, e);
+  if(rule.kind == Docking_kind::boundary && !merged.empty())
   {
     // A merged seam: Kabsch on every merged vertex (interpolated where inserted).
     Point_matrix on_first, on_second;
     if(side_u == 0)
     {
-      internal::seam_points(rule, placed_u, target_v, on_first, on_second);
+      internal::seam_points(rule, merged, placed_u, target_v, on_first, on_second);
       if(!internal::seam_is_collinear(on_first)) return fit_rigid_motion(on_second, on_first);
     }
     else
     {
-      internal::seam_points(rule, target_v, placed_u, on_first, on_second);
+      internal::seam_points(rule, merged, target_v, placed_u, on_first, on_second);
       if(!internal::seam_is_collinear(on_second)) return fit_rigid_motion(on_first, on_second);
     }
   }
-  if(rule.kind == Docking_kind::boundary && !rule.seam.empty() && rule.merged_seam.empty())
+  if(rule.kind == Docking_kind::boundary && !rule.seam.empty() && merged.empty())
   {
     Point_matrix from(rule.seam.size(), 3), to(rule.seam.size(), 3);
     for(std::size_t k = 0; k < rule.seam.size(); ++k)
@@ -226,143 +227,25 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
   // Differently sampled seams (merged seams) first insert their vertices
   // into the parts that lack them: node i's inserted vertices follow its
   // type's locals, each splitting a border edge of the part.
-  std::vector<internal::Part_refinement> refinements(n);
-  std::vector<std::vector<std::array<int, 2>>> merged_locals(graph.edges.size()); // per merged vertex: local on each side
-  for(std::size_t k = 0; k < graph.edges.size(); ++k)
-  {
-    const Part_edge& e = graph.edges[k];
-    const Docking_rule& rule = model.rules[e.rule];
-    for(const Seam_vertex& v : rule.merged_seam)
-    {
-      std::array<int, 2> local = v.local;
-      for(int s = 0; s < 2; ++s)
-        if(local[s] < 0)
-        {
-          const int node = s == 0 ? e.first : e.second;
-          internal::Part_refinement& r = refinements[node];
-          local[s] = model.types[graph.nodes[node].type].number_of_vertices + int(r.inserted.size());
-          r.inserted.push_back({v.from[s], v.to[s], v.weight[s]});
-        }
-      merged_locals[k].push_back(local);
-    }
-  }
+  const internal::Graph_refinement refined = internal::refine_part_graph(model, graph);
+  const std::vector<internal::Part_refinement>& refinements = refined.nodes;
+  const std::vector<std::vector<std::array<int, 2>>>& merged_locals = refined.merged_locals;
+  std::vector<Point_matrix> placed_points(n);
   for(int i = 0; i < n; ++i)
   {
-    internal::Part_refinement& r = refinements[i];
-    if(r.inserted.empty()) continue;
-    const Part_type& type = model.types[graph.nodes[i].type];
-    // Split each border edge (from, to) at its inserted vertices, in order:
-    // the triangle (from, to, c) becomes the fan (from, x1, c) ... (xk, to, c).
-    std::map<std::pair<int, int>, std::vector<std::pair<double, int>>> on_edge;
-    for(std::size_t k = 0; k < r.inserted.size(); ++k)
-      on_edge[{r.inserted[k].from, r.inserted[k].to}].push_back(
-        {r.inserted[k].weight, type.number_of_vertices + int(k)});
-    r.triangles = type.triangles;
-    std::set<std::pair<int, int>> split;
-    for(auto& [edge, inserted] : on_edge)
-    {
-      std::sort(inserted.begin(), inserted.end());
-      bool found = false;
-      for(std::size_t t = 0; t < r.triangles.size() && !found; ++t)
-        for(int c = 0; c < 3 && !found; ++c)
-        {
-          const Triangle tri = r.triangles[t];
-          if(tri[c] != edge.first || tri[(c + 1) % 3] != edge.second) continue;
-          found = true;
-          const int apex = tri[(c + 2) % 3];
-          int previous = edge.first;
-          std::vector<Triangle> fan;
-          for(const auto& [w, x] : inserted)
-          {
-            fan.push_back({previous, x, apex});
-            previous = x;
-          }
-          fan.push_back({previous, edge.second, apex});
-          r.triangles[t] = fan.front();
-          r.triangles.insert(r.triangles.end(), fan.begin() + 1, fan.end());
-          split.insert({std::min(edge.first, edge.second), std::max(edge.first, edge.second)});
-        }
-      if(!found)
-        throw Input_error("part graph", "node " + std::to_string(i) + " (" + type.name + ")",
-                          "a merged seam splits its edge " + std::to_string(edge.first) + " - " +
-                            std::to_string(edge.second) + ", which is not a border edge of its type");
-    }
-    std::set<std::pair<int, int>> edges;
-    for(const Cluster_edge& ce : type.edges)
-      if(!ce.is_virtual && !split.count({ce.source, ce.target})) edges.insert({ce.source, ce.target});
-    for(const Triangle& t : r.triangles)
-      for(int c = 0; c < 3; ++c)
-        edges.insert({std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3])});
-    for(const auto& [a, b] : edges) r.edges.push_back({a, b, false});
-    for(const Cluster_edge& ce : type.edges)
-      if(ce.is_virtual) r.edges.push_back(ce);
+    placed_points[i] = refinements[i].inserted.empty() ? placed_targets[i]
+                                                       : internal::refine_points(placed_targets[i], refinements[i].inserted);
+    graph.nodes[i].motion = motion[i];
+    graph.nodes[i].label = -1;
   }
-
-  std::vector<int> offset(n + 1, 0);
-  for(int i = 0; i < n; ++i)
-    offset[i + 1] = offset[i] + model.types[graph.nodes[i].type].number_of_vertices + int(refinements[i].inserted.size());
-  const int total = offset[n];
-  std::vector<int> rank(total), parent(total);
-  boost::disjoint_sets<int*, int*> classes(rank.data(), parent.data());
-  for(int v = 0; v < total; ++v) classes.make_set(v);
-  for(std::size_t k = 0; k < graph.edges.size(); ++k)
-  {
-    const Part_edge& e = graph.edges[k];
-    for(const auto& [l0, l1] : model.rules[e.rule].seam) classes.union_set(offset[e.first] + l0, offset[e.second] + l1);
-    for(const std::array<int, 2>& l : merged_locals[k])
-      classes.union_set(offset[e.first] + l[0], offset[e.second] + l[1]);
-  }
-  std::vector<int> vertex_of_class(total, -1);
-  int vertices = 0;
-  for(int v = 0; v < total; ++v)
-  {
-    const int c = classes.find_set(v);
-    if(vertex_of_class[c] < 0) vertex_of_class[c] = vertices++;
-  }
-  Point_matrix sum = Point_matrix::Zero(vertices, 3);
-  Eigen::VectorXd count = Eigen::VectorXd::Zero(vertices);
-  for(int i = 0; i < n; ++i)
-  {
-    Part_node& node = graph.nodes[i];
-    const int locals = offset[i + 1] - offset[i];
-    const Point_matrix placed_i = refinements[i].inserted.empty()
-                                    ? placed_targets[i]
-                                    : internal::refine_points(placed_targets[i], refinements[i].inserted);
-    node.vertices.assign(locals, -1);
-    std::map<int, int> local_of_vertex;
-    for(int l = 0; l < locals; ++l)
-    {
-      const int v = vertex_of_class[classes.find_set(offset[i] + l)];
-      const auto [it, inserted] = local_of_vertex.insert({v, l});
-      if(!inserted)
-        throw Input_error("part graph", "node " + std::to_string(i) + " (" + model.types[node.type].name + ")",
-                          "its dockings identify its local vertices " + std::to_string(it->second) + " and " +
-                            std::to_string(l) + " (a cycle of dockings that does not close consistently)");
-      node.vertices[l] = v;
-      sum.row(v) += placed_i.row(l);
-      count[v] += 1.;
-    }
-    node.motion = motion[i];
-    node.label = -1;
-  }
-  Point_matrix initial(vertices, 3);
-  for(int v = 0; v < vertices; ++v) initial.row(v) = sum.row(v) / count[v];
+  const Indexed_mesh mesh = internal::stitch_part_graph(model, graph, refined, placed_points, &result.face_nodes);
+  const Point_matrix& initial = mesh.points;
+  for(int node : result.face_nodes) result.face_types.push_back(graph.nodes[node].type);
   result.seam_vertices.assign(graph.edges.size(), {});
   for(std::size_t k = 0; k < graph.edges.size(); ++k)
     for(const std::array<int, 2>& l : merged_locals[k])
       result.seam_vertices[k].push_back(graph.nodes[graph.edges[k].first].vertices[l[0]]);
 
-  Indexed_mesh mesh;
-  mesh.points = initial;
-  for(int i = 0; i < n; ++i)
-    for(const Triangle& t : refinements[i].inserted.empty() ? model.types[graph.nodes[i].type].triangles
-                                                            : refinements[i].triangles)
-    {
-      mesh.triangles.push_back({graph.nodes[i].vertices[t[0]], graph.nodes[i].vertices[t[1]],
-                                graph.nodes[i].vertices[t[2]]});
-      result.face_nodes.push_back(i);
-      result.face_types.push_back(graph.nodes[i].type);
-    }
   for(Part_edge& e : graph.edges)
   {
     const Docking_rule& rule = model.rules[e.rule];

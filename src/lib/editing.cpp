@@ -30,11 +30,13 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
     throw Input_error("model", "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   const Training_example& ex = model.examples[example];
+  // A stitched example (parts corresponded separately) has merged seams.
+  const internal::Graph_refinement refined = internal::refine_part_graph(model, ex.graph);
   return internal::make_part_graph_problem(
     model, ex.graph, ex.mesh,
     [&policy](int, const Shape_space& space, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
               const std::string& type_name) { return policy(space, coordinates, rest, type_name); },
-    pair_sigmas);
+    pair_sigmas, refined.empty() ? nullptr : &refined.nodes);
 }
 
 } // namespace

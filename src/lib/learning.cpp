@@ -4,6 +4,8 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
+#include <CGAL/MPM/internal/Part_graph_problem.h>
+#include <CGAL/MPM/internal/Seam_stitching.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
 #include <CGAL/Kd_tree.h>
@@ -49,6 +51,7 @@ struct Observation
   Docking_kind kind = Docking_kind::boundary;
   std::vector<int> site_a, site_b;          // sorted local ids
   std::vector<std::pair<int, int>> seam;    // (local in a, local in b), sorted
+  std::vector<Seam_vertex> merged;          // a stitched seam: side 0 is a
   Site_ref ref_a, ref_b;
 };
 
@@ -272,13 +275,49 @@ Point_matrix instance_points(const Part_instance& part, const Indexed_mesh& mesh
   return p;
 }
 
+// Boundary dockings with merged seams between a rebuilt part and its seam
+// neighbours. A site is the part's own vertices on the seam and the ends of
+// the border edges the seam splits.
+void stitched_dockings(int example, const Labeled_mesh& original, const Labeled_mesh& rebuilt,
+                       const std::vector<Part_instance>& parts, const std::map<int, int>& part_of_label,
+                       const Corresponded_training& corresponded, std::vector<Observation>& observations)
+{
+  std::map<int, std::vector<int>> part_vertices;
+  for(const auto& [label, p] : part_of_label) part_vertices[label] = parts[p].vertices;
+  for(internal::Stitched_seam& seam :
+      internal::stitch_seams(original, rebuilt, corresponded.original_vertex[example], part_vertices,
+                             corresponded.detached[example]))
+  {
+    Observation o;
+    o.example = example;
+    o.a = part_of_label.at(seam.label_a);
+    o.b = part_of_label.at(seam.label_b);
+    o.kind = Docking_kind::boundary;
+    for(const Seam_vertex& v : seam.merged)
+      for(int side = 0; side < 2; ++side)
+      {
+        std::vector<int>& site = side == 0 ? o.site_a : o.site_b;
+        if(v.local[side] >= 0) site.push_back(v.local[side]);
+        else site.insert(site.end(), {v.from[side], v.to[side]});
+      }
+    for(std::vector<int>* site : {&o.site_a, &o.site_b})
+    {
+      std::sort(site->begin(), site->end());
+      site->erase(std::unique(site->begin(), site->end()), site->end());
+    }
+    o.merged = std::move(seam.merged);
+    observations.push_back(std::move(o));
+  }
+}
+
 // Boundary dockings: parts whose faces share an edge. Generalized dockings:
 // parts of different connected components within the docking radius.
 // With `corresponded`, a part rebuilt by dense correspondence (detached
 // from the neighbours it shared seams with) docks only to those.
 std::vector<Observation> find_dockings(const std::vector<Training_input>& inputs,
                                        const std::vector<Part_instance>& parts, double radius,
-                                       const Corresponded_training* corresponded)
+                                       const Corresponded_training* corresponded,
+                                       const std::vector<Training_input>* originals)
 {
   std::vector<Observation> observations;
   for(std::size_t e = 0; e < inputs.size(); ++e)
@@ -360,12 +399,14 @@ std::vector<Observation> find_dockings(const std::vector<Training_input>& inputs
         seamed.insert(a);
         seamed.insert(b);
       }
+    // A rebuilt part that had seams docks by them, stitched (see below).
     const auto may_dock = [&](int p, int q) {
       if(!corresponded) return true;
-      const int a = parts[p].label, b = parts[q].label;
       const auto bound = [&](int l) { return corresponded->detached[e].count(l) > 0 && seamed.count(l) > 0; };
-      return !(bound(a) || bound(b)) || corresponded->seams[e].count({std::min(a, b), std::max(a, b)}) > 0;
+      return !(bound(parts[p].label) || bound(parts[q].label));
     };
+    if(corresponded && originals && !corresponded->detached[e].empty())
+      stitched_dockings(int(e), (*originals)[e].mesh, lm, parts, part_of_label, *corresponded, observations);
     std::set<int> all_components;
     for(const auto& [p, comps] : components_of_part) all_components.insert(comps.begin(), comps.end());
     if(all_components.size() < 2) continue;
@@ -450,6 +491,21 @@ std::vector<std::pair<int, int>> swapped(const std::vector<std::pair<int, int>>&
   return r;
 }
 
+// The same merged seam seen from the other side, whose loop runs the other way.
+std::vector<Seam_vertex> swapped(const std::vector<Seam_vertex>& seam)
+{
+  std::vector<Seam_vertex> r(seam.rbegin(), seam.rend());
+  for(Seam_vertex& v : r)
+  {
+    std::swap(v.local[0], v.local[1]);
+    std::swap(v.from[0], v.from[1]);
+    std::swap(v.to[0], v.to[1]);
+    std::swap(v.weight[0], v.weight[1]);
+    v.parameter = v.parameter > 0. ? 1. - v.parameter : 0.;
+  }
+  return r;
+}
+
 // Near neighbours for the virtual edges of a generalized docking: each site
 // vertex is tied to its few closest vertices of the other site.
 constexpr int virtual_neighbours = 3;
@@ -473,10 +529,29 @@ void add_virtual_edges(const Point_matrix& from, const std::vector<int>& from_po
   }
 }
 
+// An example with merged seams becomes one mesh: its parts' border edges
+// split at the other side's seam vertices, identified vertices shared.
+void stitch_example(const Morphable_part_model& model, Training_example& example)
+{
+  Part_graph& graph = example.graph;
+  if(std::all_of(graph.edges.begin(), graph.edges.end(), [](const Part_edge& e) { return e.merged_seam.empty(); }))
+    return;
+  const internal::Graph_refinement refined = internal::refine_part_graph(model, graph);
+  std::vector<Point_matrix> placed;
+  for(std::size_t i = 0; i < graph.nodes.size(); ++i)
+    placed.push_back(internal::refine_points(internal::gather_rows(example.mesh.points, graph.nodes[i].vertices),
+                                             refined.nodes[i].inserted));
+  std::vector<int> face_nodes;
+  example.mesh = internal::stitch_part_graph(model, graph, refined, placed, &face_nodes);
+  example.face_labels.clear();
+  for(int node : face_nodes) example.face_labels.push_back(graph.nodes[node].label);
+}
+
 // The learner proper, on inputs whose same-type parts share connectivity
 // (`corresponded`: how they were made so, or null).
 Morphable_part_model learn_corresponded(const std::vector<Training_input>& inputs, const Learning_options& options,
-                                        const Corresponded_training* corresponded)
+                                        const Corresponded_training* corresponded,
+                                        const std::vector<Training_input>* originals)
 {
   const auto progress = [&](const std::string& stage, double fraction) {
     if(options.progress) options.progress(stage, fraction);
@@ -500,7 +575,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
   }
 
   progress("dockings", 0.1);
-  std::vector<Observation> observations = find_dockings(inputs, parts, parameters.docking_radius, corresponded);
+  std::vector<Observation> observations = find_dockings(inputs, parts, parameters.docking_radius, corresponded, originals);
   for(Observation& o : observations)
   {
     o.ref_a = {parts[o.a].type, find_or_add_site(model.types[parts[o.a].type], o.kind, o.site_a)};
@@ -537,6 +612,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
       rule.second = std::get<1>(key);
       rule.kind = o.kind;
       rule.seam = std::get<3>(key);
+      rule.merged_seam = flip ? swapped(o.merged) : o.merged;
       model.rules.push_back(std::move(rule));
       rule_observations.emplace_back();
     }
@@ -649,7 +725,9 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
     };
     add_type_edges(type0, index0);
     add_type_edges(type1, index1);
-    if(rule.kind == Docking_kind::generalized)
+    // Across a merged seam, which each observation samples differently,
+    // virtual edges tie the two sides as in a generalized docking.
+    if(rule.kind == Docking_kind::generalized || !rule.merged_seam.empty())
     {
       std::set<std::pair<int, int>> virtual_edges;
       for(const Oriented_observation& oo : rule_observations[r])
@@ -727,8 +805,10 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
         edge.rule = static_cast<int>(r);
         edge.coordinates = space.instance_coordinates.col(instance_in_rule[oo.observation]);
         edge.motion = space.instance_motions[instance_in_rule[oo.observation]];
+        edge.merged_seam = oo.flipped ? swapped(o.merged) : o.merged;
         example.graph.edges.push_back(std::move(edge));
       }
+    stitch_example(model, example);
     model.examples.push_back(std::move(example));
   }
   progress("done", 1.);
@@ -851,9 +931,16 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
     }
   }
 
+  result.original_vertex.resize(inputs.size());
   for(std::size_t e = 0; e < inputs.size(); ++e)
   {
-    if(replaced[e].empty()) continue;
+    std::vector<int>& original_vertex = result.original_vertex[e];
+    if(replaced[e].empty())
+    {
+      original_vertex.resize(inputs[e].mesh.mesh.number_of_vertices());
+      std::iota(original_vertex.begin(), original_vertex.end(), 0);
+      continue;
+    }
     const Labeled_mesh& lm = inputs[e].mesh;
     Labeled_mesh rebuilt;
     rebuilt.source = lm.source;
@@ -894,6 +981,9 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
     }
     rebuilt.mesh.points.resize(points.size(), 3);
     for(std::size_t v = 0; v < points.size(); ++v) rebuilt.mesh.points.row(v) = points[v];
+    original_vertex.assign(points.size(), -1);
+    for(std::size_t v = 0; v < new_of.size(); ++v)
+      if(new_of[v] >= 0) original_vertex[new_of[v]] = static_cast<int>(v);
     Annotation& annotation = result.inputs[e].annotation;
     for(auto& [label, landmarks] : annotation.landmarks_of_label)
     {
@@ -918,8 +1008,8 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
   if(inputs.empty()) throw Input_error("", "", "no training mesh given");
   for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
   const Corresponded_training corresponded = correspond_training_inputs(inputs, options);
-  return corresponded.types.empty() ? learn_corresponded(inputs, options, nullptr)
-                                    : learn_corresponded(corresponded.inputs, options, &corresponded);
+  return corresponded.types.empty() ? learn_corresponded(inputs, options, nullptr, nullptr)
+                                    : learn_corresponded(corresponded.inputs, options, &corresponded, &inputs);
 }
 
 Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const Annotation& annotation,

@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Atomic_file.h>
 
@@ -71,6 +72,14 @@ public:
   {
     count(es.size());
     for(const Cluster_edge& e : es) { i32(e.source); i32(e.target); u8(e.is_virtual ? 1 : 0); }
+  }
+  void merged_seam(const std::vector<Seam_vertex>& seam)
+  {
+    count(seam.size());
+    for(const Seam_vertex& v : seam) {
+      f64(v.parameter);
+      for(int side = 0; side < 2; ++side) { i32(v.local[side]); i32(v.from[side]); i32(v.to[side]); f64(v.weight[side]); }
+    }
   }
   void site_ref(const Site_ref& s) { i32(s.type); i32(s.site); }
   void kind(Docking_kind k) { u8(k == Docking_kind::boundary ? 0 : 1); }
@@ -172,6 +181,15 @@ public:
     if(v > 1) damaged("a flag of value " + std::to_string(v));
     return v == 1;
   }
+  std::vector<Seam_vertex> merged_seam()
+  {
+    std::vector<Seam_vertex> seam(count(8 + 2 * 20));
+    for(Seam_vertex& v : seam) {
+      v.parameter = f64();
+      for(int side = 0; side < 2; ++side) { v.local[side] = i32(); v.from[side] = i32(); v.to[side] = i32(); v.weight[side] = f64(); }
+    }
+    return seam;
+  }
   Site_ref site_ref() { Site_ref s; s.type = i32(); s.site = i32(); return s; }
   Docking_kind kind() { return flag() ? Docking_kind::generalized : Docking_kind::boundary; }
   Shape_space space()
@@ -235,11 +253,7 @@ std::string payload_of(const Morphable_part_model& model)
     w.kind(r.kind);
     w.count(r.seam.size());
     for(const auto& s : r.seam) { w.i32(s.first); w.i32(s.second); }
-    w.count(r.merged_seam.size());
-    for(const Seam_vertex& v : r.merged_seam) {
-      w.f64(v.parameter);
-      for(int side = 0; side < 2; ++side) { w.i32(v.local[side]); w.i32(v.from[side]); w.i32(v.to[side]); w.f64(v.weight[side]); }
-    }
+    w.merged_seam(r.merged_seam);
     w.count(r.points.size());
     for(const Pair_point& q : r.points) { w.i32(q.side); w.i32(q.local); }
     w.edges(r.edges);
@@ -267,6 +281,7 @@ std::string payload_of(const Morphable_part_model& model)
       w.i32(g.rule);
       w.vector(g.coordinates);
       w.motion(g.motion);
+      w.merged_seam(g.merged_seam);
     }
   }
   return std::move(w.bytes);
@@ -301,11 +316,7 @@ Morphable_part_model model_of(Reader& r)
     rule.kind = r.kind();
     rule.seam.resize(r.count(8));
     for(auto& s : rule.seam) { s.first = r.i32(); s.second = r.i32(); }
-    rule.merged_seam.resize(r.count(8 + 2 * 20));
-    for(Seam_vertex& v : rule.merged_seam) {
-      v.parameter = r.f64();
-      for(int side = 0; side < 2; ++side) { v.local[side] = r.i32(); v.from[side] = r.i32(); v.to[side] = r.i32(); v.weight[side] = r.f64(); }
-    }
+    rule.merged_seam = r.merged_seam();
     rule.points.resize(r.count(8));
     for(Pair_point& q : rule.points) { q.side = r.i32(); q.local = r.i32(); }
     rule.edges = r.edges();
@@ -326,13 +337,14 @@ Morphable_part_model model_of(Reader& r)
       n.coordinates = r.vector();
       n.motion = r.motion();
     }
-    e.graph.edges.resize(r.count(12 + 8 + 12 * 8));
+    e.graph.edges.resize(r.count(12 + 8 + 12 * 8 + 8));
     for(Part_edge& g : e.graph.edges) {
       g.first = r.i32();
       g.second = r.i32();
       g.rule = r.i32();
       g.coordinates = r.vector();
       g.motion = r.motion();
+      g.merged_seam = r.merged_seam();
     }
   }
   if(r.remaining() != 0) r.damaged(std::to_string(r.remaining()) + " bytes after the model");
@@ -381,19 +393,7 @@ private:
       in_range(rule.seam[s].first, n[0], element + " seam pair " + std::to_string(s), "first vertex");
       in_range(rule.seam[s].second, n[1], element + " seam pair " + std::to_string(s), "second vertex");
     }
-    for(std::size_t k = 0; k < rule.merged_seam.size(); ++k) {
-      const Seam_vertex& v = rule.merged_seam[k];
-      const std::string where = element + " merged seam vertex " + std::to_string(k);
-      for(int side = 0; side < 2; ++side) {
-        // -1 marks a vertex inserted on that side; it then lies on an edge.
-        in_range(v.local[side] + 1, n[side] + 1, where, "vertex");
-        if(v.local[side] < 0) {
-          in_range(v.from[side], n[side], where, "split edge start");
-          in_range(v.to[side], n[side], where, "split edge end");
-        }
-        if(!(v.weight[side] >= 0. && v.weight[side] <= 1.)) fail(where, "interpolation weight outside [0, 1]");
-      }
-    }
+    check_merged_seam(rule.merged_seam, n, element);
     for(std::size_t q = 0; q < rule.points.size(); ++q) {
       const Pair_point& p = rule.points[q];
       const std::string where = element + " point " + std::to_string(q);
@@ -416,16 +416,8 @@ private:
       fail(element, std::to_string(ex.face_labels.size()) + " face labels for " +
                       std::to_string(ex.mesh.triangles.size()) + " faces");
     const auto& nodes = ex.graph.nodes;
-    for(std::size_t i = 0; i < nodes.size(); ++i) {
-      const std::string where = element + " node " + std::to_string(i);
-      in_range(nodes[i].type, int(m_.types.size()), where, "part type");
-      const Part_type& type = m_.types[nodes[i].type];
-      if(nodes[i].vertices.size() != std::size_t(type.number_of_vertices))
-        fail(where, std::to_string(nodes[i].vertices.size()) + " vertices for a part type of " +
-                      std::to_string(type.number_of_vertices));
-      for(int v : nodes[i].vertices) in_range(v, nv, where, "mesh vertex");
-      coordinates_fit(nodes[i].coordinates, type.space, where);
-    }
+    for(std::size_t i = 0; i < nodes.size(); ++i)
+      in_range(nodes[i].type, int(m_.types.size()), element + " node " + std::to_string(i), "part type");
     for(std::size_t i = 0; i < ex.graph.edges.size(); ++i) {
       const Part_edge& g = ex.graph.edges[i];
       const std::string where = element + " edge " + std::to_string(i);
@@ -436,6 +428,43 @@ private:
       if(nodes[g.first].type != rule.first.type || nodes[g.second].type != rule.second.type)
         fail(where, "its nodes are not of the part types rule " + std::to_string(g.rule) + " docks");
       coordinates_fit(g.coordinates, rule.space, where);
+      const int n[2] = {m_.types[rule.first.type].number_of_vertices, m_.types[rule.second.type].number_of_vertices};
+      check_merged_seam(g.merged_seam, n, where);
+    }
+    // Merged seams insert vertices into their parts, listed after the type's.
+    std::vector<std::size_t> inserted(nodes.size(), 0);
+    try {
+      const internal::Graph_refinement refined = internal::refine_part_graph(m_, ex.graph);
+      for(std::size_t i = 0; i < nodes.size(); ++i) inserted[i] = refined.nodes[i].inserted.size();
+    } catch(const Input_error& error) {
+      fail(element, error.what());
+    }
+    for(std::size_t i = 0; i < nodes.size(); ++i) {
+      const std::string where = element + " node " + std::to_string(i);
+      const Part_type& type = m_.types[nodes[i].type];
+      if(nodes[i].vertices.size() != std::size_t(type.number_of_vertices) + inserted[i])
+        fail(where, std::to_string(nodes[i].vertices.size()) + " vertices for a part type of " +
+                      std::to_string(type.number_of_vertices) +
+                      (inserted[i] ? " and " + std::to_string(inserted[i]) + " inserted seam vertices" : ""));
+      for(int v : nodes[i].vertices) in_range(v, nv, where, "mesh vertex");
+      coordinates_fit(nodes[i].coordinates, type.space, where);
+    }
+  }
+
+  void check_merged_seam(const std::vector<Seam_vertex>& seam, const int n[2], const std::string& element) const
+  {
+    for(std::size_t k = 0; k < seam.size(); ++k) {
+      const Seam_vertex& v = seam[k];
+      const std::string where = element + " merged seam vertex " + std::to_string(k);
+      for(int side = 0; side < 2; ++side) {
+        // -1 marks a vertex inserted on that side; it then lies on an edge.
+        in_range(v.local[side] + 1, n[side] + 1, where, "vertex");
+        if(v.local[side] < 0) {
+          in_range(v.from[side], n[side], where, "split edge start");
+          in_range(v.to[side], n[side], where, "split edge end");
+        }
+        if(!(v.weight[side] >= 0. && v.weight[side] <= 1.)) fail(where, "interpolation weight outside [0, 1]");
+      }
     }
   }
 

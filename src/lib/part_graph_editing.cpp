@@ -318,7 +318,7 @@ void finish_derived_rule(const Morphable_part_model& model, Docking_rule& rule)
 
   // The pair's mean: the second part docked on the first by the seam.
   Point_matrix from, to;
-  internal::seam_points(rule, mean_a, mean_b, to, from);
+  internal::seam_points(rule, rule.merged_seam, mean_a, mean_b, to, from);
   const Point_matrix second = fit_rigid_motion(from, to).apply(mean_b);
   Point_matrix instance(rule.points.size(), 3);
   for(std::size_t k = 0; k < rule.points.size(); ++k)

@@ -5,11 +5,16 @@
 // geometry). Used by the editing problems and by assembly.
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 
+#include <CGAL/MPM/Input_error.h>
+
 #include <Eigen/SVD>
+
+#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace CGAL {
 namespace MPM {
@@ -58,10 +63,15 @@ Eigen::MatrixXd refine_modes(const Eigen::MatrixXd& modes, const std::vector<Ins
   return r;
 }
 
-void seam_points(const Docking_rule& rule, const Point_matrix& first, const Point_matrix& second,
-                 Point_matrix& on_first, Point_matrix& on_second)
+const std::vector<Seam_vertex>& merged_seam_of(const Docking_rule& rule, const Part_edge& edge)
 {
-  if(rule.merged_seam.empty())
+  return edge.merged_seam.empty() ? rule.merged_seam : edge.merged_seam;
+}
+
+void seam_points(const Docking_rule& rule, const std::vector<Seam_vertex>& merged, const Point_matrix& first,
+                 const Point_matrix& second, Point_matrix& on_first, Point_matrix& on_second)
+{
+  if(merged.empty())
   {
     on_first.resize(rule.seam.size(), 3);
     on_second.resize(rule.seam.size(), 3);
@@ -72,11 +82,11 @@ void seam_points(const Docking_rule& rule, const Point_matrix& first, const Poin
     }
     return;
   }
-  on_first.resize(rule.merged_seam.size(), 3);
-  on_second.resize(rule.merged_seam.size(), 3);
-  for(std::size_t k = 0; k < rule.merged_seam.size(); ++k)
+  on_first.resize(merged.size(), 3);
+  on_second.resize(merged.size(), 3);
+  for(std::size_t k = 0; k < merged.size(); ++k)
   {
-    const Seam_vertex& v = rule.merged_seam[k];
+    const Seam_vertex& v = merged[k];
     for(int s = 0; s < 2; ++s)
     {
       const Point_matrix& p = s == 0 ? first : second;
@@ -87,27 +97,166 @@ void seam_points(const Docking_rule& rule, const Point_matrix& first, const Poin
   }
 }
 
-std::vector<int> seam_locals(const Docking_rule& rule, int side)
+bool Graph_refinement::empty() const
 {
-  std::vector<int> r;
-  for(const auto& [l0, l1] : rule.seam) r.push_back(side == 0 ? l0 : l1);
-  for(const Seam_vertex& v : rule.merged_seam)
-    if(v.local[side] >= 0) r.push_back(v.local[side]);
-  std::sort(r.begin(), r.end());
-  r.erase(std::unique(r.begin(), r.end()), r.end());
-  return r;
+  return std::all_of(nodes.begin(), nodes.end(), [](const Part_refinement& r) { return r.inserted.empty(); });
 }
 
-Point_matrix pair_target(const Docking_rule& rule, const Point_matrix& first, Point_matrix second,
-                         const Point_matrix& second_rest, const Rigid_motion& pair_motion, const Point_matrix& rest)
+namespace {
+
+// Splits each border edge (from, to) of `type` at its inserted vertices, in
+// order: the triangle (from, to, c) becomes the fan (from, x1, c) ... (xk, to, c).
+void split_border_edges(const Part_type& type, int node, Part_refinement& r)
 {
-  if(!rule.merged_seam.empty())
+  std::map<std::pair<int, int>, std::vector<std::pair<double, int>>> on_edge;
+  for(std::size_t k = 0; k < r.inserted.size(); ++k)
+    on_edge[{r.inserted[k].from, r.inserted[k].to}].push_back({r.inserted[k].weight, type.number_of_vertices + int(k)});
+  r.triangles = type.triangles;
+  std::set<std::pair<int, int>> split;
+  for(auto& [edge, inserted] : on_edge)
+  {
+    std::sort(inserted.begin(), inserted.end());
+    bool found = false;
+    for(std::size_t t = 0; t < r.triangles.size() && !found; ++t)
+      for(int c = 0; c < 3 && !found; ++c)
+      {
+        const Triangle tri = r.triangles[t];
+        if(tri[c] != edge.first || tri[(c + 1) % 3] != edge.second) continue;
+        found = true;
+        const int apex = tri[(c + 2) % 3];
+        int previous = edge.first;
+        std::vector<Triangle> fan;
+        for(const auto& [w, x] : inserted)
+        {
+          fan.push_back({previous, x, apex});
+          previous = x;
+        }
+        fan.push_back({previous, edge.second, apex});
+        r.triangles[t] = fan.front();
+        r.triangles.insert(r.triangles.end(), fan.begin() + 1, fan.end());
+        split.insert({std::min(edge.first, edge.second), std::max(edge.first, edge.second)});
+      }
+    if(!found)
+      throw Input_error("part graph", "node " + std::to_string(node) + " (" + type.name + ")",
+                        "a merged seam splits its edge " + std::to_string(edge.first) + " - " +
+                          std::to_string(edge.second) + ", which is not a border edge of its type");
+  }
+  std::set<std::pair<int, int>> edges;
+  for(const Cluster_edge& ce : type.edges)
+    if(!ce.is_virtual && !split.count({ce.source, ce.target})) edges.insert({ce.source, ce.target});
+  for(const Triangle& t : r.triangles)
+    for(int c = 0; c < 3; ++c) edges.insert({std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3])});
+  for(const auto& [a, b] : edges) r.edges.push_back({a, b, false});
+  for(const Cluster_edge& ce : type.edges)
+    if(ce.is_virtual) r.edges.push_back(ce);
+}
+
+} // namespace
+
+Graph_refinement refine_part_graph(const Morphable_part_model& model, const Part_graph& graph)
+{
+  Graph_refinement result;
+  result.nodes.resize(graph.nodes.size());
+  result.merged_locals.resize(graph.edges.size());
+  // Per node: inserted vertex of each (from, to, weight), so that dockings
+  // meeting at one point of a border edge insert it once.
+  std::vector<std::map<std::tuple<int, int, double>, int>> inserted_at(graph.nodes.size());
+  for(std::size_t k = 0; k < graph.edges.size(); ++k)
+  {
+    const Part_edge& e = graph.edges[k];
+    for(const Seam_vertex& v : merged_seam_of(model.rules[e.rule], e))
+    {
+      std::array<int, 2> local = v.local;
+      for(int s = 0; s < 2; ++s)
+        if(local[s] < 0)
+        {
+          const int node = s == 0 ? e.first : e.second;
+          Part_refinement& r = result.nodes[node];
+          const auto [it, added] = inserted_at[node].insert(
+            {{v.from[s], v.to[s], v.weight[s]}, model.types[graph.nodes[node].type].number_of_vertices + int(r.inserted.size())});
+          if(added) r.inserted.push_back({v.from[s], v.to[s], v.weight[s]});
+          local[s] = it->second;
+        }
+      result.merged_locals[k].push_back(local);
+    }
+  }
+  for(std::size_t i = 0; i < graph.nodes.size(); ++i)
+    if(!result.nodes[i].inserted.empty())
+      split_border_edges(model.types[graph.nodes[i].type], static_cast<int>(i), result.nodes[i]);
+  return result;
+}
+
+Indexed_mesh stitch_part_graph(const Morphable_part_model& model, Part_graph& graph, const Graph_refinement& refined,
+                               const std::vector<Point_matrix>& placed, std::vector<int>* face_nodes)
+{
+  const std::size_t n = graph.nodes.size();
+  std::vector<int> offset(n + 1, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    offset[i + 1] = offset[i] + model.types[graph.nodes[i].type].number_of_vertices + int(refined.nodes[i].inserted.size());
+  const int total = offset[n];
+  std::vector<int> rank(total), parent(total);
+  boost::disjoint_sets<int*, int*> classes(rank.data(), parent.data());
+  for(int v = 0; v < total; ++v) classes.make_set(v);
+  for(std::size_t k = 0; k < graph.edges.size(); ++k)
+  {
+    const Part_edge& e = graph.edges[k];
+    if(e.merged_seam.empty())
+      for(const auto& [l0, l1] : model.rules[e.rule].seam) classes.union_set(offset[e.first] + l0, offset[e.second] + l1);
+    for(const std::array<int, 2>& l : refined.merged_locals[k])
+      classes.union_set(offset[e.first] + l[0], offset[e.second] + l[1]);
+  }
+  std::vector<int> vertex_of_class(total, -1);
+  int vertices = 0;
+  for(int v = 0; v < total; ++v)
+  {
+    const int c = classes.find_set(v);
+    if(vertex_of_class[c] < 0) vertex_of_class[c] = vertices++;
+  }
+  Point_matrix sum = Point_matrix::Zero(vertices, 3);
+  Eigen::VectorXd count = Eigen::VectorXd::Zero(vertices);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    Part_node& node = graph.nodes[i];
+    const int locals = offset[i + 1] - offset[i];
+    node.vertices.assign(locals, -1);
+    std::map<int, int> local_of_vertex;
+    for(int l = 0; l < locals; ++l)
+    {
+      const int v = vertex_of_class[classes.find_set(offset[i] + l)];
+      const auto [it, inserted] = local_of_vertex.insert({v, l});
+      if(!inserted)
+        throw Input_error("part graph", "node " + std::to_string(i) + " (" + model.types[node.type].name + ")",
+                          "its dockings identify its local vertices " + std::to_string(it->second) + " and " +
+                            std::to_string(l) + " (a cycle of dockings that does not close consistently)");
+      node.vertices[l] = v;
+      sum.row(v) += placed[i].row(l);
+      count[v] += 1.;
+    }
+  }
+  Indexed_mesh mesh;
+  mesh.points.resize(vertices, 3);
+  for(int v = 0; v < vertices; ++v) mesh.points.row(v) = sum.row(v) / count[v];
+  for(std::size_t i = 0; i < n; ++i)
+    for(const Triangle& t : refined.nodes[i].inserted.empty() ? model.types[graph.nodes[i].type].triangles
+                                                              : refined.nodes[i].triangles)
+    {
+      mesh.triangles.push_back({graph.nodes[i].vertices[t[0]], graph.nodes[i].vertices[t[1]], graph.nodes[i].vertices[t[2]]});
+      if(face_nodes) face_nodes->push_back(static_cast<int>(i));
+    }
+  return mesh;
+}
+
+Point_matrix pair_target(const Docking_rule& rule, const std::vector<Seam_vertex>& merged, const Point_matrix& first,
+                         Point_matrix second, const Point_matrix& second_rest, const Rigid_motion& pair_motion,
+                         const Point_matrix& rest)
+{
+  if(!merged.empty())
   {
     // A merged seam: the second part is placed on the first by every merged
     // vertex (interpolated where it is inserted); a merged loop is never
     // collinear (it has at least as many points as either loop).
     Point_matrix on_first, on_second;
-    seam_points(rule, first, second, on_first, on_second);
+    seam_points(rule, merged, first, second, on_first, on_second);
     if(!seam_is_collinear(on_second)) second = fit_rigid_motion(on_second, on_first).apply(second);
   }
   else if(!rule.seam.empty())
@@ -153,7 +302,7 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
       seams[e.first].insert(l0);
       seams[e.second].insert(l1);
     }
-    for(const Seam_vertex& v : rule.merged_seam)
+    for(const Seam_vertex& v : merged_seam_of(rule, e))
       for(int s = 0; s < 2; ++s)
         if(v.local[s] >= 0) (s == 0 ? seams[e.first] : seams[e.second]).insert(v.local[s]);
   }
@@ -248,7 +397,7 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
     std::sort(c.border.begin(), c.border.end());
     c.border.erase(std::unique(c.border.begin(), c.border.end()), c.border.end());
     c.edges = rule.edges;
-    c.mean = pair_target(rule, placed_targets[e.first], placed_targets[e.second],
+    c.mean = pair_target(rule, merged_seam_of(rule, e), placed_targets[e.first], placed_targets[e.second],
                          gather_rows(mesh.points, type_vertices(*side[1])), e.motion, gather_rows(mesh.points, c.vertices));
     c.modes = rule.space.modes;
     c.sigmas = pair_sigmas(rule.space);

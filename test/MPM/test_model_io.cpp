@@ -118,7 +118,7 @@ TEST(ModelIo, HeaderLayout)
 {
   const std::string bytes = serialize_model(sample_model());
   EXPECT_EQ(bytes.substr(0, 8), "CGALMPM\n");
-  EXPECT_EQ(bytes.substr(8, 4), std::string("\x02\x00\x00\x00", 4)); // format version 2
+  EXPECT_EQ(bytes.substr(8, 4), std::string("\x03\x00\x00\x00", 4)); // format version 3
   std::uint64_t length = 0;
   for(int i = 0; i < 8; ++i) length |= std::uint64_t(static_cast<unsigned char>(bytes[12 + i])) << (8 * i);
   EXPECT_EQ(length + 24, bytes.size());
@@ -186,7 +186,7 @@ TEST(ModelIo, ForeignAndOtherVersionFiles)
 
   std::string bytes = serialize_model(sample_model());
   bytes[8] = 7;
-  MPM_EXPECT_INPUT_ERROR(deserialize_model(bytes, "old.mpm"), "old.mpm: model format version 7, this build reads version 2");
+  MPM_EXPECT_INPUT_ERROR(deserialize_model(bytes, "old.mpm"), "old.mpm: model format version 7, this build reads version 3");
 }
 
 TEST(ModelIo, DamagedFiles)
@@ -282,4 +282,37 @@ TEST(ModelIo, InconsistentIndicesNameTheElement)
   m = sample_model();
   std::swap(m.examples[0].graph.edges[0].first, m.examples[0].graph.edges[0].second);
   expect(m, "example 0 (\"hand.off\") edge 0", "not of the part types rule 0 docks");
+}
+
+// A docking of a stitched training example carries its own merged seam;
+// the part it inserts a vertex into lists that vertex after its own.
+TEST(ModelIo, EdgeMergedSeamsRoundTripAndAreChecked)
+{
+  Morphable_part_model m = sample_model();
+  Seam_vertex v;
+  v.parameter = 0.25;
+  v.local = {{1, -1}};
+  v.from = {{-1, 0}};
+  v.to = {{-1, 1}};
+  v.weight = {{0., 0.5}};
+  m.examples[0].graph.edges[0].merged_seam = {v};
+  m.examples[0].graph.nodes[1].vertices.push_back(1);
+  const std::string bytes = serialize_model(m);
+  const Morphable_part_model r = deserialize_model(bytes, "memory");
+  EXPECT_TRUE(serialize_model(r) == bytes);
+  ASSERT_EQ(r.examples[0].graph.edges[0].merged_seam.size(), 1u);
+  EXPECT_EQ(r.examples[0].graph.edges[0].merged_seam[0].weight[1], 0.5);
+  EXPECT_EQ(r.examples[0].graph.edges[0].merged_seam[0].from[1], 0);
+
+  Morphable_part_model bad = m;
+  bad.examples[0].graph.nodes[1].vertices.pop_back();
+  MPM_EXPECT_INPUT_ERROR(deserialize_model(serialize_model(bad), "bad.mpm"),
+                         "bad.mpm: example 0 (\"hand.off\") node 1", "3 vertices", "1 inserted seam vertices");
+  bad = m;
+  bad.examples[0].graph.edges[0].merged_seam[0].to[1] = 3;
+  MPM_EXPECT_INPUT_ERROR(deserialize_model(serialize_model(bad), "bad.mpm"),
+                         "example 0 (\"hand.off\") edge 0 merged seam vertex 0", "split edge end 3");
+  bad = m;
+  bad.examples[0].graph.edges[0].merged_seam[0].to[1] = 2; // 0 -> 2 is not a border half-edge of the tip
+  MPM_EXPECT_INPUT_ERROR(deserialize_model(serialize_model(bad), "bad.mpm"), "bad.mpm", "not a border edge");
 }

@@ -13,7 +13,7 @@ namespace MPM {
 
 /// \ingroup PkgMPMRef
 /// Version of the model file format written by this library.
-constexpr std::uint32_t model_file_version = 2;
+constexpr std::uint32_t model_file_version = 3;
 
 /// \ingroup PkgMPMRef
 /// The model as bytes of the versioned model format: a magic string, the

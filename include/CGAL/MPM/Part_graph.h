@@ -3,6 +3,7 @@
 #ifndef CGAL_MPM_PART_GRAPH_H
 #define CGAL_MPM_PART_GRAPH_H
 
+#include <CGAL/MPM/Docking_rule.h>
 #include <CGAL/MPM/Shape_space.h>
 
 #include <Eigen/Core>
@@ -32,6 +33,11 @@ struct Part_edge
   int rule = -1;   ///< index of the rule in the model
   Eigen::VectorXd coordinates; ///< shape coordinates of the pair geometry
   Rigid_motion motion;         ///< mean frame -> placement of the pair geometry
+  /// This docking's own merged seam (a seam of a training mesh whose two
+  /// parts were put in correspondence separately, so that each observation
+  /// samples it differently); empty: the rule's `Docking_rule::merged_seam`
+  /// or `Docking_rule::seam` applies.
+  std::vector<Seam_vertex> merged_seam;
 };
 
 /// \ingroup PkgMPMRef

@@ -58,6 +58,9 @@ struct Corresponded_training
   std::vector<std::set<std::pair<int, int>>> seams;
   /// Per input: the labels of the rebuilt parts.
   std::vector<std::set<int>> detached;
+  /// Per input: the input vertex of each vertex of the rebuilt mesh, -1 for
+  /// the vertices of rebuilt parts.
+  std::vector<std::vector<int>> original_vertex;
 };
 
 /// \ingroup PkgMPMRef
@@ -78,8 +81,10 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
 /// each part, vertices are numbered by first appearance in its faces, in
 /// face order); annotated types whose parts are triangulated differently are
 /// first put in dense correspondence (`correspond_training_inputs()`), and
-/// the model's examples are the rebuilt meshes, where those parts dock to
-/// their neighbours by generalized dockings. Finds boundary dockings (shared seam edges) and generalized
+/// each rebuilt part is stitched back to its neighbours: the union of the
+/// two border samplings along the original seam, each side's border edges
+/// split at the other's vertices, is a boundary docking with a merged seam
+/// (`Part_edge::merged_seam`), so that the example is one surface again. Finds boundary dockings (shared seam edges) and generalized
 /// dockings (parts of different connected components within the docking
 /// radius), learns a shape space per part type and per docking rule, and
 /// collects the grammar. Instances and rules are pooled across all inputs;

@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 #include <functional>
 #include <string>
 
@@ -54,6 +56,32 @@ struct Part_refinement
   std::vector<Cluster_edge> edges;
 };
 
+// The merged seam of a docking: the edge's own (a training observation) or
+// else the rule's; empty when the seam is sampled alike on both sides.
+const std::vector<Seam_vertex>& merged_seam_of(const Docking_rule& rule, const Part_edge& edge);
+
+// The parts of a graph with the vertices its merged seams insert: per node
+// its refinement, per edge and merged vertex the local vertex on each side
+// (an inserted one numbered after the type's). A vertex inserted into the
+// same border edge at the same weight by two dockings (a junction of three
+// parts) is one vertex. Throws Input_error when a merged seam splits an
+// edge that is not a border edge of the part's type.
+struct Graph_refinement
+{
+  std::vector<Part_refinement> nodes;
+  std::vector<std::vector<std::array<int, 2>>> merged_locals;
+  bool empty() const;
+};
+Graph_refinement refine_part_graph(const Morphable_part_model& model, const Part_graph& graph);
+
+// One mesh from the parts of a graph: identified (node, local) pairs (seam
+// pairs and merged seams) become one vertex placed at the mean of their
+// `placed` rows (per node: its refined local points); sets every node's
+// `vertices`, appends each face's node to `face_nodes` when given. Throws
+// Input_error when dockings identify two local vertices of one part.
+Indexed_mesh stitch_part_graph(const Morphable_part_model& model, Part_graph& graph, const Graph_refinement& refined,
+                               const std::vector<Point_matrix>& placed, std::vector<int>* face_nodes = nullptr);
+
 // `points` (the type's local vertices) followed by the interpolated rows of
 // the inserted vertices.
 Point_matrix refine_points(const Point_matrix& points, const std::vector<Inserted_vertex>& inserted);
@@ -65,11 +93,9 @@ Eigen::MatrixXd refine_modes(const Eigen::MatrixXd& modes, const std::vector<Ins
 // (from the first part's points `first`) meets row k of `on_second`. Seams
 // sampled alike: the pairs of `rule.seam`; a merged seam: every merged
 // vertex, interpolated on the side where it is inserted.
-void seam_points(const Docking_rule& rule, const Point_matrix& first, const Point_matrix& second,
+void seam_points(const Docking_rule& rule, const std::vector<Seam_vertex>& merged, const Point_matrix& first, const Point_matrix& second,
                  Point_matrix& on_first, Point_matrix& on_second);
 
-// Local vertices of side `side` on the seam of `rule` (sorted).
-std::vector<int> seam_locals(const Docking_rule& rule, int side);
 
 // Builds one part cluster per node and one pair cluster per edge over
 // `mesh` (the rest / initial positions), and the coupled same-type
@@ -90,7 +116,7 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
 // translation and the second part keeps its rest orientation; without a
 // seam (generalized docking) both keep their rest placement. Expressed in
 // the pair space's frame through `pair_motion` and the pair's rest points.
-Point_matrix pair_target(const Docking_rule& rule, const Point_matrix& first, Point_matrix second,
+Point_matrix pair_target(const Docking_rule& rule, const std::vector<Seam_vertex>& merged, const Point_matrix& first, Point_matrix second,
                          const Point_matrix& second_rest, const Rigid_motion& pair_motion, const Point_matrix& rest);
 
 // True when the seam points `p` (k x 3) are too close to a line to fix a

@@ -1,0 +1,203 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// quality_real_meshes: learns a model from every segmented mesh of a
+// directory (NAME.off + NAME.seg, types from NAME.json in --annotations)
+// and checks what the user would see: is the learned example one closed
+// surface like the input, do symmetrize, caricature and a drag of every
+// tip converge with closed seams and no flipped faces, do segments keep
+// their length. Prints a Markdown table.
+#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include "quality_common.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+
+namespace {
+
+using namespace CGAL::MPM;
+namespace fs = std::filesystem;
+
+struct Edit_result
+{
+  bool converged = false;
+  int iterations = 0;
+  Surface_soundness soundness;
+  int new_self_intersections = 0;
+  double worst_length_change = 0.; // largest |length / rest length - 1| of a part
+  int parts_outside_range = 0;     // parts whose length leaves their type's range (+-10%)
+};
+
+// Extent of a point set along its principal axis: a segment's length.
+double length_of(const Point_matrix& p)
+{
+  const Point_matrix c = p.rowwise() - p.colwise().mean();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(c.transpose() * c);
+  const Eigen::VectorXd along = c * eig.eigenvectors().col(2);
+  return along.maxCoeff() - along.minCoeff();
+}
+
+Point_matrix rows(const Point_matrix& p, const std::vector<int>& v, std::size_t n)
+{
+  Point_matrix r(n, 3);
+  for(std::size_t i = 0; i < n; ++i) r.row(i) = p.row(v[i]);
+  return r;
+}
+
+Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem& problem, Embedding_solver& solver,
+                     const Surface_soundness& rest)
+{
+  Edit_result r;
+  const Solve_report report = solver.solve();
+  r.converged = report.converged;
+  r.iterations = report.iterations;
+  Indexed_mesh after = problem.mesh;
+  after.points = solver.positions();
+  r.soundness = check_surface(after, &problem.mesh);
+  r.new_self_intersections = std::max(0, r.soundness.self_intersections - std::max(0, rest.self_intersections));
+  std::map<int, std::pair<double, double>> range; // per type: rest lengths
+  const Training_example& ex = model.examples.front();
+  for(const Part_node& node : ex.graph.nodes)
+  {
+    const std::size_t n = model.types[node.type].number_of_vertices;
+    const double l = length_of(rows(problem.mesh.points, node.vertices, n));
+    auto [it, added] = range.insert({node.type, {l, l}});
+    it->second = {std::min(it->second.first, l), std::max(it->second.second, l)};
+  }
+  for(const Part_node& node : ex.graph.nodes)
+  {
+    const std::size_t n = model.types[node.type].number_of_vertices;
+    const double before = length_of(rows(problem.mesh.points, node.vertices, n));
+    const double now = length_of(rows(after.points, node.vertices, n));
+    r.worst_length_change = std::max(r.worst_length_change, std::abs(now / before - 1.));
+    const auto [low, high] = range.at(node.type);
+    r.parts_outside_range += now < low / 1.1 || now > high * 1.1;
+  }
+  return r;
+}
+
+// One handle per tip (a part with one docking, not the largest part), at
+// its vertex farthest from its neighbour, moved by 10% of the diagonal
+// across the line from the root; the root's farthest vertices are held.
+void set_tip_handles(const Morphable_part_model& model, const Embedding_problem& problem, Embedding_solver& solver)
+{
+  const Training_example& ex = model.examples.front();
+  std::vector<int> degree(ex.graph.nodes.size(), 0);
+  for(const Part_edge& e : ex.graph.edges) ++degree[e.first], ++degree[e.second];
+  int root = 0;
+  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
+    if(ex.graph.nodes[i].vertices.size() > ex.graph.nodes[root].vertices.size()) root = int(i);
+  const Point_matrix& p = problem.mesh.points;
+  const double diagonal = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+  const Eigen::RowVector3d centre = rows(p, ex.graph.nodes[root].vertices, ex.graph.nodes[root].vertices.size()).colwise().mean();
+  std::vector<int> vertices;
+  std::vector<Eigen::RowVector3d> targets;
+  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
+  {
+    if(degree[i] != 1 || int(i) == root) continue;
+    const std::vector<int>& v = ex.graph.nodes[i].vertices;
+    int tip = v.front();
+    for(int x : v)
+      if((p.row(x) - centre).norm() > (p.row(tip) - centre).norm()) tip = x;
+    const Eigen::Vector3d axis = (p.row(tip) - centre).transpose().normalized();
+    Eigen::Vector3d side = axis.cross(Eigen::Vector3d::UnitZ());
+    if(side.norm() < 0.1) side = axis.cross(Eigen::Vector3d::UnitX());
+    vertices.push_back(tip);
+    targets.push_back(p.row(tip) + 0.1 * diagonal * side.normalized().transpose());
+  }
+  for(int x : ex.graph.nodes[root].vertices)
+    if(std::find(vertices.begin(), vertices.end(), x) == vertices.end() && vertices.size() < targets.size() + 4 &&
+       (p.row(x) - centre).norm() > 0.)
+    {
+      vertices.push_back(x);
+      targets.push_back(p.row(x));
+    }
+  Point_matrix y(targets.size(), 3);
+  for(std::size_t k = 0; k < targets.size(); ++k) y.row(k) = targets[k];
+  solver.set_handles(vertices, y);
+}
+
+std::string edit_cells(const Edit_result& r)
+{
+  std::ostringstream s;
+  s << (r.converged ? "yes " : "no ") << r.iterations << " | " << r.soundness.border_edges << " | "
+    << r.soundness.flipped_faces << " | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
+    << 100. * r.worst_length_change << "% (" << r.parts_outside_range << ")";
+  return s.str();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const mpm_quality::Options options(
+    argc, argv, {{"data", "../shared/data/psb"}, {"annotations", ""}, {"meshes", ""}},
+    "usage: quality_real_meshes [--data DIR] [--annotations DIR] [--meshes a,b,...]\n"
+    "Learns every DIR/NAME.off with DIR/NAME.seg (part types from ANNOTATIONS/NAME.json)\n"
+    "and prints the soundness of the learned example and of symmetrize, caricature and a tip drag.\n");
+  std::vector<std::string> names = options.list("meshes");
+  if(names.empty())
+    for(const auto& entry : fs::directory_iterator(options.text("data")))
+      if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  std::cout << "| mesh | learn s | example pieces | open edges | new self-int. | Hausdorff % | edit | converged, iterations | "
+               "open edges | flipped | new self-int. | worst length change (parts out of range) |\n"
+               "| --- | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: |\n";
+  for(const std::string& name : names)
+  {
+    try
+    {
+      const std::string base = options.text("data") + "/" + name;
+      Training_input input;
+      input.mesh = read_labeled_mesh(base + ".off", base + ".seg");
+      if(!options.text("annotations").empty())
+        input.annotation = read_annotation(options.text("annotations") + "/" + name + ".json");
+      const auto start = std::chrono::steady_clock::now();
+      const Morphable_part_model model = learn_morphable_part_model({input});
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const Training_example& ex = model.examples.front();
+      const Surface_soundness input_soundness = check_surface(input.mesh.mesh);
+      const Surface_soundness rest = check_surface(ex.mesh);
+      std::ostringstream head;
+      head << "| " << name << " | " << std::setprecision(2) << seconds << " | " << rest.components << " | "
+           << rest.border_edges << " | "
+           << std::max(0, rest.self_intersections - std::max(0, input_soundness.self_intersections)) << " | "
+           << std::setprecision(2) << 100. * relative_hausdorff_distance(ex.mesh, input.mesh.mesh) << " | ";
+      struct Edit
+      {
+        const char* name;
+        Embedding_problem problem;
+        bool drag;
+      };
+      std::vector<Edit> edits;
+      edits.push_back({"symmetrize", make_symmetrization_problem(model), false});
+      edits.push_back({"caricature 2", make_caricature_problem(model, 2.), false});
+      edits.push_back({"tip drag", make_deformation_problem(model), true});
+      for(Edit& e : edits)
+      {
+        Embedding_solver solver(e.problem);
+        if(e.drag) set_tip_handles(model, e.problem, solver);
+        std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | ") << e.name << " | "
+                  << edit_cells(evaluate(model, e.problem, solver, rest)) << " |\n"
+                  << std::flush;
+      }
+    }
+    catch(const std::exception& error)
+    {
+      std::cout << "| " << name << " | failed: " << error.what() << " |\n";
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,124 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/Surface_soundness.h>
+
+#include <Eigen/Geometry>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point_3 = Kernel::Point_3;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+
+std::vector<Point_3> points_of(const Indexed_mesh& mesh)
+{
+  std::vector<Point_3> p;
+  for(int i = 0; i < mesh.number_of_vertices(); ++i) p.emplace_back(mesh.points(i, 0), mesh.points(i, 1), mesh.points(i, 2));
+  return p;
+}
+
+std::vector<std::vector<std::size_t>> faces_of(const Indexed_mesh& mesh)
+{
+  std::vector<std::vector<std::size_t>> f;
+  for(const Triangle& t : mesh.triangles) f.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  return f;
+}
+
+// Pieces through shared edges (a union-find over faces; a soup need not
+// be a valid Surface_mesh, so CGAL's face-graph components do not apply).
+int components_of(const Indexed_mesh& mesh)
+{
+  std::vector<int> parent(mesh.triangles.size());
+  for(std::size_t f = 0; f < parent.size(); ++f) parent[f] = int(f);
+  const auto find = [&](int f) {
+    while(parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  std::map<std::pair<int, int>, int> face_of_edge;
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+      const auto [it, added] = face_of_edge.insert({{std::min(a, b), std::max(a, b)}, int(f)});
+      if(!added) parent[find(int(f))] = find(it->second);
+    }
+  int pieces = 0;
+  for(std::size_t f = 0; f < parent.size(); ++f) pieces += find(int(f)) == int(f);
+  return pieces;
+}
+
+Eigen::Vector3d normal_of(const Indexed_mesh& mesh, const Triangle& t)
+{
+  const Eigen::Vector3d a = mesh.points.row(t[0]).transpose(), b = mesh.points.row(t[1]).transpose(),
+                        c = mesh.points.row(t[2]).transpose();
+  return (b - a).cross(c - a);
+}
+
+} // namespace
+
+Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference)
+{
+  Surface_soundness s;
+  s.components = components_of(mesh);
+  std::map<std::pair<int, int>, int> count;
+  for(const Triangle& t : mesh.triangles)
+    for(int k = 0; k < 3; ++k) ++count[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  for(const auto& [edge, c] : count)
+  {
+    s.border_edges += c == 1;
+    s.non_manifold_edges += c > 2;
+  }
+  const std::vector<Point_3> points = points_of(mesh);
+  const std::vector<std::vector<std::size_t>> faces = faces_of(mesh);
+  if(PMP::is_polygon_soup_a_polygon_mesh(faces))
+  {
+    Mesh sm;
+    PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
+    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+    PMP::self_intersections(sm, std::back_inserter(pairs));
+    s.self_intersections = static_cast<int>(pairs.size());
+  }
+  else
+    s.self_intersections = -1;
+  for(const Triangle& t : mesh.triangles)
+    s.degenerate_faces += CGAL::collinear(points[t[0]], points[t[1]], points[t[2]]);
+  if(reference && reference->triangles == mesh.triangles)
+  {
+    s.flipped_faces = 0;
+    for(const Triangle& t : mesh.triangles) s.flipped_faces += normal_of(mesh, t).dot(normal_of(*reference, t)) < 0.;
+  }
+  return s;
+}
+
+double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
+{
+  const auto to_mesh = [](const Indexed_mesh& m) {
+    Mesh sm;
+    PMP::polygon_soup_to_polygon_mesh(points_of(m), faces_of(m), sm);
+    return sm;
+  };
+  const Mesh ma = to_mesh(a), mb = to_mesh(b);
+  const double diagonal = (b.points.colwise().maxCoeff() - b.points.colwise().minCoeff()).norm();
+  const double d = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
+    ma, mb, CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)),
+    CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)));
+  return d / diagonal;
+}
+
+} // namespace MPM
+} // namespace CGAL
