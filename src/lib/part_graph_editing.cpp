@@ -383,7 +383,6 @@ std::vector<int> add_repetition_rules(Morphable_part_model& model)
     const Part_type& type = model.types[t];
     if(type.sites.size() != 2) continue;
     if(type.sites[0].kind != Docking_kind::boundary || type.sites[1].kind != Docking_kind::boundary) continue;
-    if(type.sites[0].vertices.size() != type.sites[1].vertices.size()) continue;
     if(grammar.allows({t, 0}, {t, 1})) continue;
     Docking_rule rule;
     try {

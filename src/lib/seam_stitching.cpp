@@ -324,9 +324,10 @@ private:
     return on;
   }
 
-  // Neighbouring points of different parts closer than a fifth of the finer
-  // border edge become one vertex, so that no sliver triangle joins them;
-  // never two vertices of one part, never two original vertices.
+  // Neighbouring points of different parts closer than half the finer
+  // border edge become one vertex, so that no sliver fan joins them (a
+  // fifth left twice as many flipped seam faces after symmetrize on the
+  // hands); never two vertices of one part, never two original vertices.
   void merge_close_points()
   {
     const auto on = points_on_loops();
@@ -353,7 +354,7 @@ private:
         if(std::any_of(labels[ri].begin(), labels[ri].end(), [&](int l) { return labels[rj].count(l) > 0; })) continue;
         double tolerance = std::numeric_limits<double>::infinity();
         for(int p : {i, j})
-          if(points_[p].label >= 0) tolerance = std::min(tolerance, 0.2 * borders_.at(points_[p].label).mean_edge);
+          if(points_[p].label >= 0) tolerance = std::min(tolerance, 0.5 * borders_.at(points_[p].label).mean_edge);
         if(!((points_[i].position - points_[j].position).norm() < tolerance)) continue;
         classes_[ri] = rj;
         labels[rj].insert(labels[ri].begin(), labels[ri].end());

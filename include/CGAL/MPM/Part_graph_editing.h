@@ -56,7 +56,8 @@ Docking_rule derive_docking_rule(const Morphable_part_model& model, const Site_r
 int add_derived_rule(Morphable_part_model& model, const Site_ref& a, const Site_ref& b);
 
 /// Appends the repetition rule of every part type with exactly two docking
-/// sites, both boundary loops of equal size, that no rule docks yet. The
+/// sites, both simple boundary loops (of any sizes: loops of different sizes,
+/// as a segment of a real mesh has, get a merged seam), that no rule docks yet. The
 /// learned rules keep their indices. Returns the indices of the added rules
 /// (none on a second call).
 std::vector<int> add_repetition_rules(Morphable_part_model& model);

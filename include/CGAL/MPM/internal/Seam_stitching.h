@@ -33,7 +33,7 @@ struct Stitched_seam
 // vertices, `original_vertex[v]` (-1 for a rebuilt part's vertex).
 // `part_vertices`: per label, local id -> vertex of `rebuilt`.
 // Each part's border vertices are located on the original seam polylines;
-// points closer than a fifth of the finer side's border edge are one
+// points closer than half the finer side's border edge are one
 // vertex; a part's border edge is split at every other part's point and
 // every seam junction between its two ends.
 std::vector<Stitched_seam> stitch_seams(const Labeled_mesh& original, const Labeled_mesh& rebuilt,
