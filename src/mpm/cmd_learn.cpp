@@ -3,17 +3,22 @@
 //
 // `mpm learn MESH [--labels SEG] [--annotation JSON] [MESH2 ...] -o MODEL`:
 // learns a morphable part model from part-labelled meshes and saves it.
+// Meshes without an annotation whose segments are not in known
+// correspondence (real segmentations) get proposed part types first.
 #include "cli.h"
 
 #include <CGAL/MPM/Annotation_io.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/Part_type_proposal.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <climits>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 
 namespace mpm {
@@ -26,7 +31,9 @@ namespace fs = std::filesystem;
 struct Input_files
 {
   std::string mesh, labels, annotation;
+  std::string write_annotation; // --write-annotation FILE: where the proposed types go
   bool labels_given = false, annotation_given = false;
+  bool proposed = false; // part types proposed by propose_part_types()
 };
 
 std::vector<Input_files> collect_inputs(const Args& args)
@@ -36,12 +43,18 @@ std::vector<Input_files> collect_inputs(const Args& args)
   {
     if(item.option.empty())
     {
-      inputs.push_back({item.value, "", "", false, false});
+      inputs.push_back({item.value, "", "", "", false, false, false});
       continue;
     }
-    if(item.option != "labels" && item.option != "annotation") continue;
+    if(item.option != "labels" && item.option != "annotation" && item.option != "write-annotation") continue;
     if(inputs.empty()) throw Usage_error("option --" + item.option + " must follow the MESH it belongs to");
     Input_files& in = inputs.back();
+    if(item.option == "write-annotation")
+    {
+      if(!in.write_annotation.empty()) throw Usage_error("option --write-annotation given twice for " + in.mesh);
+      in.write_annotation = item.value;
+      continue;
+    }
     bool& given = item.option == "labels" ? in.labels_given : in.annotation_given;
     if(given) throw Usage_error("option --" + item.option + " given twice for " + in.mesh);
     given = true;
@@ -64,13 +77,120 @@ std::vector<Input_files> collect_inputs(const Args& args)
   return inputs;
 }
 
+// The proposal's table: one row per segment, in breadth-first order from
+// the root, then the instance count of each type.
+void print_proposal(std::ostream& out, const std::string& mesh, const CGAL::MPM::Part_type_proposal& p)
+{
+  out << "Proposed part types for " << mesh << " (root: segment " << p.root << ")\n";
+  Table table({"label", "faces", "area", "seams", "neighbours", "depth", "type", "split off because"},
+              {true, true, true, true, false, true, false, false});
+  for(const CGAL::MPM::Segment_proposal& s : p.segments)
+  {
+    std::string neighbours;
+    for(int n : s.neighbours) neighbours += (neighbours.empty() ? "" : " ") + std::to_string(n);
+    table.add_row({std::to_string(s.label), std::to_string(s.faces), format_number(s.area, 3),
+                   std::to_string(s.seam_loops), neighbours, std::to_string(s.depth), s.type, s.reason});
+  }
+  table.print(out);
+  out << "  instances:";
+  for(const auto& [type, count] : p.instances_of_type()) out << " " << type << " x" << count;
+  out << "\n\n";
+}
+
+Json proposal_json(const std::string& mesh, const CGAL::MPM::Part_type_proposal& p)
+{
+  Json segments = Json::array();
+  for(const CGAL::MPM::Segment_proposal& s : p.segments)
+    segments.push_back({{"label", s.label}, {"faces", s.faces}, {"area", s.area}, {"diameter", s.diameter},
+                        {"seam_loops", s.seam_loops}, {"neighbours", s.neighbours}, {"depth", s.depth},
+                        {"parent", s.parent}, {"type", s.type}, {"reason", s.reason}});
+  return {{"mesh", mesh}, {"root", p.root}, {"instances", p.instances_of_type()}, {"segments", segments}};
+}
+
+// Meshes with no annotation whose segments are not in known correspondence
+// (no two with identical connectivity: a real segmentation) get proposed
+// part types; synthetic inputs keep the learner's grouping by connectivity.
+// Returns the proposals, one per file (empty where none was made).
+std::vector<CGAL::MPM::Part_type_proposal> propose_missing_types(std::vector<Input_files>& files,
+                                                                 std::vector<CGAL::MPM::Training_input>& inputs)
+{
+  using namespace CGAL::MPM;
+  std::vector<std::size_t> bare;
+  std::vector<Labeled_mesh> meshes;
+  bool several_segments = false;
+  for(std::size_t i = 0; i < files.size(); ++i)
+    if(inputs[i].annotation.part_type_of_label.empty())
+    {
+      bare.push_back(i);
+      meshes.push_back(inputs[i].mesh);
+      const auto& l = meshes.back().face_labels;
+      several_segments |= std::any_of(l.begin(), l.end(), [&](int x) { return x != l.front(); });
+    }
+  std::vector<Part_type_proposal> proposals(files.size());
+  if(bare.empty() || !several_segments || segments_share_connectivity(meshes)) return proposals;
+  std::vector<Part_type_proposal> made = propose_part_types(meshes);
+  for(std::size_t k = 0; k < bare.size(); ++k)
+  {
+    inputs[bare[k]].annotation.part_type_of_label = made[k].annotation.part_type_of_label;
+    files[bare[k]].proposed = true;
+    proposals[bare[k]] = std::move(made[k]);
+  }
+  return proposals;
+}
+
+// The learner groups nothing when every type has one instance: no shape
+// space has modes, which a user should hear about.
+void warn_if_no_type_repeats(const CGAL::MPM::Morphable_part_model& model,
+                             const std::function<void(const std::string&)>& warn)
+{
+  std::vector<int> instances(model.types.size(), 0);
+  for(const auto& e : model.examples)
+    for(const auto& n : e.graph.nodes)
+      if(n.type >= 0 && n.type < static_cast<int>(model.types.size())) ++instances[std::size_t(n.type)];
+  if(!instances.empty() && *std::max_element(instances.begin(), instances.end()) < 2)
+    warn("no part type has two instances (" + std::to_string(model.types.size()) +
+         " types of one segment each): the model has no learned variation; give alike segments one type "
+         "(an annotation, or no annotation so that types are proposed)");
+}
+
+// Proposes the missing part types, writes the requested annotations and
+// prints the tables (text) or returns them (JSON).
+Json propose_and_report(std::vector<Input_files>& files, std::vector<CGAL::MPM::Training_input>& inputs,
+                        Context& context)
+{
+  using namespace CGAL::MPM;
+  const std::vector<Part_type_proposal> proposals = propose_missing_types(files, inputs);
+  Json proposed = Json::array();
+  for(std::size_t i = 0; i < files.size(); ++i)
+  {
+    if(!files[i].write_annotation.empty() && !files[i].proposed)
+      throw Usage_error("--write-annotation " + files[i].write_annotation + ": no part types were proposed for " +
+                        files[i].mesh + " (it has an annotation, or its parts share connectivity)");
+    if(!files[i].proposed) continue;
+    if(!files[i].write_annotation.empty())
+    {
+      ensure_parent_directory(files[i].write_annotation);
+      write_annotation(inputs[i].annotation, files[i].write_annotation);
+    }
+    if(context.json)
+      proposed.push_back(proposal_json(files[i].mesh, proposals[i]));
+    else
+    {
+      context.progress.done();
+      print_proposal(std::cout, files[i].mesh, proposals[i]);
+      std::cout.flush();
+    }
+  }
+  return proposed;
+}
+
 int run_learn(const Args& args, Context& context)
 {
   using namespace CGAL::MPM;
   const auto start = std::chrono::steady_clock::now();
   if(!args.has("output")) throw Usage_error("'mpm learn' needs -o MODEL");
   const std::string output = args.text("output");
-  const std::vector<Input_files> files = collect_inputs(args);
+  std::vector<Input_files> files = collect_inputs(args);
 
   std::vector<std::string> warnings;
   auto warn = [&](const std::string& w) {
@@ -102,10 +222,14 @@ int run_learn(const Args& args, Context& context)
     inputs.push_back(std::move(input));
   }
 
+  const Json proposed = propose_and_report(files, inputs, context);
+  validate_seam_counts(inputs);
+
   Learning_options options;
   options.progress = [&](const std::string& stage, double fraction) { context.progress.update(stage, fraction); };
   options.warning = warn;
   const Morphable_part_model model = learn_morphable_part_model(inputs, options);
+  warn_if_no_type_repeats(model, warn);
 
   context.progress.update("saving " + output, 0.);
   ensure_parent_directory(output);
@@ -118,8 +242,10 @@ int run_learn(const Args& args, Context& context)
   for(const Input_files& f : files)
     in.push_back({{"mesh", f.mesh},
                   {"labels", f.labels},
-                  {"annotation", f.annotation.empty() ? Json(nullptr) : Json(f.annotation)}});
+                  {"annotation", f.annotation.empty() ? Json(nullptr) : Json(f.annotation)},
+                  {"types_proposed", f.proposed}});
   summary["inputs"] = in;
+  if(!proposed.empty()) summary["proposed_types"] = proposed;
   summary["warnings"] = warnings;
   summary["time_seconds"] = seconds;
   if(context.json)
@@ -131,7 +257,10 @@ int run_learn(const Args& args, Context& context)
             << " in " << format_number(seconds, 3) << " s\n";
   for(const Input_files& f : files)
     std::cout << "  " << f.mesh << "  labels: " << f.labels
-              << "  annotation: " << (f.annotation.empty() ? "none" : f.annotation) << "\n";
+              << "  annotation: "
+              << (f.proposed ? "proposed" + (f.write_annotation.empty() ? std::string() : ", written to " + f.write_annotation)
+                             : f.annotation.empty() ? "none" : f.annotation)
+              << "\n";
   std::cout << "\n";
   print_model_summary(std::cout, summary);
   return exit_ok;
@@ -144,7 +273,7 @@ Command make_learn_command()
   Command c;
   c.name = "learn";
   c.summary = "learn a morphable part model from part-labelled meshes";
-  c.synopsis = "MESH [--labels SEG] [--annotation JSON] [MESH2 [--labels SEG2] [--annotation JSON2] ...] -o MODEL [options]";
+  c.synopsis = "MESH [--labels SEG] [--annotation JSON] [--write-annotation FILE] [MESH2 ...] -o MODEL [options]";
   c.operand = "MESH";
   c.description =
     "MESH is an OFF, OBJ, PLY or STL file. --labels and --annotation apply to the MESH\n"
@@ -152,8 +281,12 @@ Command make_learn_command()
     "per connected component) or 'property:NAME' (an integer face property of a PLY\n"
     "file); default: MESH with its extension replaced by .seg if that file exists,\n"
     "else 'components'. Annotation (part types, landmarks, parameters; see\n"
-    "doc/MPM/File_formats.md): default MESH's .json sibling if it exists, else none\n"
-    "(parts with identical connectivity form a type). Parameters are taken from the\n"
+    "doc/MPM/File_formats.md): default MESH's .json sibling if it exists. Without\n"
+    "one, parts with identical connectivity form a type (synthetic models); when no\n"
+    "two segments share connectivity (a real segmentation), part types are proposed\n"
+    "from the segment graph (root: most neighbours; depth along each chain; seam\n"
+    "loops) and segment areas, printed as a table and used for learning;\n"
+    "--write-annotation FILE saves them for editing. Parameters are taken from the\n"
     "first mesh's annotation; the options below override them.";
   c.min_positionals = 1;
   c.max_positionals = -1;
@@ -163,6 +296,8 @@ Command make_learn_command()
      "part labels of the preceding MESH", -HUGE_VAL, HUGE_VAL, false, true},
     {"annotation", 0, Value_kind::text, "JSON", "MESH.json if present, else none",
      "annotation of the preceding MESH", -HUGE_VAL, HUGE_VAL, false, true},
+    {"write-annotation", 0, Value_kind::text, "FILE", "none",
+     "write the part types proposed for the preceding MESH as an annotation", -HUGE_VAL, HUGE_VAL, false, true},
     {"modes", 0, Value_kind::integer, "N", "annotation's, else 0 = by explained variance",
      "modes kept per shape space", 0, INT_MAX},
     {"explained-variance", 0, Value_kind::real, "F", "annotation's, else 0.99",
