@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // quality_real_meshes: learns a model from every segmented mesh of a
-// directory (NAME.off + NAME.seg, types from NAME.json in --annotations)
+// directory (NAME.off + NAME.seg; part types proposed from the segmentation,
+// or from NAME.json in --annotations)
 // and checks what the user would see: is the learned example one closed
 // surface like the input, do symmetrize, caricature and a drag of every
 // tip converge with closed seams and no flipped faces, do segments keep
@@ -12,6 +13,7 @@
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Part_type_proposal.h>
 #include <CGAL/MPM/Surface_soundness.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
@@ -145,7 +147,7 @@ int main(int argc, char** argv)
   const mpm_quality::Options options(
     argc, argv, {{"data", "../shared/data/psb"}, {"annotations", ""}, {"meshes", ""}},
     "usage: quality_real_meshes [--data DIR] [--annotations DIR] [--meshes a,b,...]\n"
-    "Learns every DIR/NAME.off with DIR/NAME.seg (part types from ANNOTATIONS/NAME.json)\n"
+    "Learns every DIR/NAME.off with DIR/NAME.seg (part types proposed, or from ANNOTATIONS/NAME.json)\n"
     "and prints the soundness of the learned example and of symmetrize, caricature and a tip drag.\n");
   std::vector<std::string> names = options.list("meshes");
   if(names.empty())
@@ -164,6 +166,8 @@ int main(int argc, char** argv)
       input.mesh = read_labeled_mesh(base + ".off", base + ".seg");
       if(!options.text("annotations").empty())
         input.annotation = read_annotation(options.text("annotations") + "/" + name + ".json");
+      else
+        input.annotation = propose_part_types(input.mesh).annotation;
       const auto start = std::chrono::steady_clock::now();
       const Morphable_part_model model = learn_morphable_part_model({input});
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Dense_correspondence.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Part_type_proposal.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Seam_stitching.h>
@@ -817,6 +818,24 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
 
 } // namespace
 
+namespace {
+
+// The first segment is the template. One of median size: a template much
+// finer than a segment crumples on it (hand_190: the largest proximal
+// phalanx, 1471 faces, on the smallest, 465, folded into 1347
+// self-intersecting face pairs), a much coarser one loses its detail.
+template <class Segment_ref>
+void put_median_segment_first(std::vector<Segment_ref>& refs)
+{
+  std::vector<std::size_t> order(refs.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return refs[a].triangles.size() < refs[b].triangles.size(); });
+  if(!order.empty()) std::rotate(refs.begin(), refs.begin() + order[order.size() / 2], refs.begin() + order[order.size() / 2] + 1);
+}
+
+} // namespace
+
 Corresponded_training correspond_training_inputs(const std::vector<Training_input>& inputs,
                                                  const Learning_options& options, bool all_types)
 {
@@ -865,13 +884,19 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
   std::vector<std::map<int, Point_matrix>> replaced(inputs.size());
   std::vector<std::map<int, std::vector<int>>> replaced_landmarks(inputs.size());
   std::vector<std::map<int, const std::vector<Triangle>*>> replaced_triangles(inputs.size());
+  std::set<int> validated;
   int type_index = 0;
-  for(const auto& [name, refs] : segments_of_type)
+  for(auto& [name, refs] : segments_of_type)
   {
     ++type_index;
+    put_median_segment_first(refs);
     bool differ = false;
     for(const Segment_ref& r : refs) differ = differ || r.triangles != refs.front().triangles;
     if(refs.size() < 2 || !(differ || all_types)) continue;
+    // A segment to correspond must be one manifold piece (a soup of pieces
+    // stays legitimate for parts in known correspondence).
+    for(const Segment_ref& r : refs)
+      if(validated.insert(r.example).second) validate_segmentation(inputs[r.example].mesh);
     if(options.progress) options.progress("correspondence of " + name, double(type_index - 1) / segments_of_type.size());
     std::vector<Correspondence_segment> segments;
     for(const Segment_ref& r : refs)
@@ -1007,6 +1032,7 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
 {
   if(inputs.empty()) throw Input_error("", "", "no training mesh given");
   for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
+  validate_seam_counts(inputs);
   const Corresponded_training corresponded = correspond_training_inputs(inputs, options);
   return corresponded.types.empty() ? learn_corresponded(inputs, options, nullptr, nullptr)
                                     : learn_corresponded(corresponded.inputs, options, &corresponded, &inputs);

@@ -295,10 +295,11 @@ private:
     {
       if(points_[i].at.a < 0) continue;
       const auto [it, added] = first.insert({points_[i].at, int(i)});
-      // Two own vertices of one part on one point stay apart (a degenerate
-      // template border); the nearer-point merge joins the rest.
+      // A vertex where a part's border passes twice (two seams touching) is
+      // one point; two own vertices of one part on one point (a degenerate
+      // template border) stay apart.
       const Seam_point& other = points_[it->second];
-      if(!added && !(other.label >= 0 && other.label == points_[i].label)) unite(int(i), it->second);
+      if(!added && (other.label != points_[i].label || other.local == points_[i].local)) unite(int(i), it->second);
     }
   }
 
@@ -368,11 +369,15 @@ private:
   {
     std::map<int, Part_side>& sides = sides_[label];
     if(on_loops_.empty()) on_loops_ = points_on_loops();
+    // Own vertices of every loop first: a point near another of the part's
+    // loops must not be inserted there as well.
+    for(std::size_t b = 0; b < border.loops.size(); ++b)
+      for(std::size_t k = 0; k < border.loops[b].size(); ++k)
+        sides.insert({find(border.point[b][k]),
+                      {border.loops[b][k], -1, -1, 0., border.parameter[b][k] / sl_length(border.on_loop[b])}});
     for(std::size_t b = 0; b < border.loops.size(); ++b)
     {
       const std::vector<int>& loop = border.loops[b];
-      for(std::size_t k = 0; k < loop.size(); ++k)
-        sides.insert({find(border.point[b][k]), {loop[k], -1, -1, 0., border.parameter[b][k] / sl_length(border.on_loop[b])}});
       const int l = border.on_loop[b];
       if(l < 0) continue;
       const Seam_loop& sl = loops_[l];
