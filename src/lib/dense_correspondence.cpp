@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <memory>
@@ -360,7 +361,11 @@ Cap_ring cap_ring(const Surface& x, double cosine)
 }
 
 // How a template loop maps onto a segment loop: template parameter u goes
-// to `offset + orientation * u` on loop `target`.
+// to `offset + orientation * u` on loop `target`. The orientation is +1 for
+// every match: loops run like their triangles on both surfaces, so a map
+// that keeps the surface's orientation keeps each loop's direction, and a
+// reversed loop pins the seam to its mirror image (a proximal phalanx of a
+// real hand came out partly inside out that way).
 struct Loop_match
 {
   int target = 0;
@@ -412,12 +417,8 @@ double rms(const Point_matrix& a, const Point_matrix& b)
 // alignment rotating least wins: a score grows by this fraction per half turn.
 constexpr double rotation_preference = 1.;
 
-// Coverage residual (fraction of the diagonal) above which the mirrored
-// template is tried too.
-constexpr double mirror_threshold = 0.02;
-
-// Candidate alignments (loop matching with cyclic shift and orientation,
-// or principal frames for closed segments), scored by the landmark residual
+// Candidate alignments (loop matching with cyclic shift, or principal
+// frames for closed segments), all proper (no reflection), scored by the landmark residual
 // after rigid alignment plus the mean distance of template samples to the
 // segment: the loops fix the twist of a tube only up to its symmetry, the
 // surface decides the rest.
@@ -515,16 +516,15 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     {
       const Point_matrix moved = first.apply(template_samples[l]);
       double best = std::numeric_limits<double>::infinity();
-      for(int o : {1, -1})
-        for(int k = 0; k < resolution; ++k)
+      for(int k = 0; k < resolution; ++k)
+      {
+        const double d = (moved - s.loops[permutation[l]].samples(samples, double(k) / resolution, 1)).squaredNorm();
+        if(d < best)
         {
-          const double d = (moved - s.loops[permutation[l]].samples(samples, double(k) / resolution, o)).squaredNorm();
-          if(d < best)
-          {
-            best = d;
-            c.loops[l] = {permutation[l], o, double(k) / resolution};
-          }
+          best = d;
+          c.loops[l] = {permutation[l], 1, double(k) / resolution};
         }
+      }
     }
     std::vector<Point_matrix> all_src, all_tgt;
     for(int l = 0; l < loops; ++l)
@@ -600,9 +600,8 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
     do
     {
       if(any_agrees && !tags_agree(t, s, permutation)) continue;
-      for(int orientation : {1, -1})
-        for(int shift = 0; shift < samples; ++shift)
-          candidates.push_back(loop_candidate(permutation, orientation, double(shift) / samples, samples, use_tilt));
+      for(int shift = 0; shift < samples; ++shift)
+        candidates.push_back(loop_candidate(permutation, 1, double(shift) / samples, samples, use_tilt));
     } while(all_orders && std::next_permutation(permutation.begin(), permutation.end()));
   }
 
@@ -1098,6 +1097,91 @@ double coverage_residual(const Surface& s, const Point_matrix& y, const std::vec
   return std::sqrt(sum / s.mesh.points.rows()) / s.diagonal;
 }
 
+// Mapped template triangles facing against the segment: the normal of the
+// mapped triangle against that of the segment's face nearest to its
+// centroid. Degenerate mapped triangles have no side and are not counted.
+std::vector<int> flipped_faces(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles)
+{
+  std::vector<int> flipped;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    const Triangle& t = triangles[f];
+    const Vec3 a = y.row(t[0]), b = y.row(t[1]), c = y.row(t[2]);
+    const Vec3 n = (b - a).cross(c - a);
+    Vec3 normal;
+    s.closest((a + b + c) / 3., &normal);
+    if(n.dot(normal) < 0) flipped.push_back(static_cast<int>(f));
+  }
+  return flipped;
+}
+
+// Repairs folds of the correspondence: on real segments they sit in the
+// first rings inside a seam, where the boundary vertices are pinned to
+// their arc-length images on a jagged cut and the next ring, pulled to the
+// closest surface points, folds over them. The free vertices of flipped
+// triangles and their neighbours go to the mean of their neighbours and
+// back onto the segment, a few times; the result with fewest flipped
+// triangles is kept. Boundary and landmark vertices stay.
+void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, const std::vector<Triangle>& triangles,
+            Point_matrix& y)
+{
+  std::vector<int> flipped = flipped_faces(s, y, triangles);
+  std::vector<bool> pinned(y.rows(), false);
+  for(Eigen::Index v = 0; v < y.rows(); ++v) pinned[v] = info.loop[v] >= 0;
+  for(const auto& [v, p] : lm.vertex_targets) pinned[v] = true;
+  Point_matrix current = y;
+  for(int pass = 0; pass < 20 && !flipped.empty(); ++pass)
+  {
+    std::vector<bool> moving(y.rows(), false);
+    for(int f : flipped)
+      for(int v : triangles[f])
+      {
+        moving[v] = true;
+        for(int w : info.neighbours[v]) moving[w] = true;
+      }
+    const Point_matrix previous = current;
+    for(Eigen::Index v = 0; v < y.rows(); ++v)
+    {
+      if(!moving[v] || pinned[v] || info.neighbours[v].empty()) continue;
+      Vec3 mean = Vec3::Zero();
+      for(int w : info.neighbours[v]) mean += previous.row(w).transpose();
+      current.row(v) = s.closest(mean / double(info.neighbours[v].size())).transpose();
+    }
+    std::vector<int> now = flipped_faces(s, current, triangles);
+    if(now.size() < flipped.size())
+    {
+      y = current;
+      flipped = std::move(now);
+    }
+  }
+}
+
+std::string percent(double fraction)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g%%", 100. * fraction);
+  return text;
+}
+
+std::string mirror_warning(const std::string& element, const std::string& segment, const std::string& template_name,
+                           double residual, double mirrored_residual)
+{
+  return segment + " (" + element + ") looks like a mirror image of the template " + template_name +
+         ": the mirrored template would cover it to " + percent(mirrored_residual) +
+         " of its diagonal, the orientation-preserving fit kept only to " + percent(residual) +
+         "; a reflection would turn the part inside out, so it keeps its own orientation. Give it a part type of its "
+         "own (a left and a right limb) or landmarks to fit it better";
+}
+
+std::string flipped_warning(const std::string& element, const std::string& segment, int flipped, std::size_t faces,
+                            double residual)
+{
+  return segment + " (" + element + "): " + std::to_string(flipped) + " of " + std::to_string(faces) +
+         " template triangles (" + percent(double(flipped) / std::max<std::size_t>(1, faces)) +
+         ") face against the segment's surface (coverage residual " + percent(residual) +
+         " of its diagonal): the correspondence folds there";
+}
+
 } // namespace
 
 std::vector<std::vector<int>> boundary_loops(const Indexed_mesh& mesh)
@@ -1118,6 +1202,11 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
   if(segments.empty()) throw Input_error("", element, "no segment to put in correspondence");
   const auto progress = [&](const std::string& stage, double fraction) {
     if(options.progress) options.progress(stage, fraction);
+  };
+  Dense_correspondence result;
+  const auto warn = [&](const std::string& message) {
+    result.warnings.push_back(message);
+    if(options.warning) options.warning(message);
   };
   const std::size_t m = segments.size();
   for(std::size_t i = 0; i < m; ++i)
@@ -1157,7 +1246,6 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
   Surface mirror(mirrored_template, type_name, segments[0].name);
   tag_loops(mirror, segments[0].seam_tags);
   const Template_info mirror_info = make_template_info(mirror);
-  Dense_correspondence result;
   result.triangles = t.mesh.triangles;
   result.segments.resize(m);
   result.segments[0].positions = result.segments[0].unrefined = t.mesh.points;
@@ -1234,10 +1322,11 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
     };
     // The lean of a lone seam is a cue at a mitred joint but arbitrary at a
     // hand-made cut: with one loop, both are tried and the one covering the
-    // segment better wins (the lean on near ties: within a quarter).
+    // segment better wins (the lean on near ties: within a quarter). A poor
+    // fit with more loops gets the second try as well.
     const auto best_of = [&](const Surface& tmpl, const Template_info& tinfo) {
       Attempt best = attempt(tmpl, tinfo, true);
-      if(tmpl.loops.size() == 1)
+      if(tmpl.loops.size() == 1 || best.residual > options.mirror_check_residual)
       {
         Attempt other = attempt(tmpl, tinfo, false);
         other.r.iterations += best.r.iterations;
@@ -1246,31 +1335,17 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
       return best;
     };
     Attempt chosen = best_of(t, info);
-    // A poor fit may be a mirror image (a left and a right limb): the
-    // mirrored template is tried and kept when it covers clearly better.
-    if(chosen.residual > mirror_threshold)
+    // A poor fit may be a mirror image (a left and a right limb). The
+    // mirrored template is tried only to say so: its positions would carry
+    // the template's triangles inside out, so the orientation-preserving
+    // fit is kept whatever the mirror covers.
+    if(chosen.residual > options.mirror_check_residual)
     {
-      Attempt reflected = best_of(mirror, mirror_info);
+      const Attempt reflected = best_of(mirror, mirror_info);
       if(reflected.residual < 0.75 * chosen.residual)
       {
-        reflected.r.mirrored = true;
-        reflected.r.iterations += chosen.r.iterations;
-        // The mirror runs its loops the other way round: parameter u on
-        // template loop l is c - u on the mirror's loop through the same
-        // vertices, c the mirror's parameter of the loop's first vertex.
-        std::vector<Loop_match> loops(t.loops.size());
-        for(std::size_t l = 0; l < t.loops.size(); ++l)
-          for(std::size_t k = 0; k < mirror.loops.size(); ++k)
-          {
-            const Loop& ml = mirror.loops[k];
-            const auto it = std::find(ml.vertices.begin(), ml.vertices.end(), t.loops[l].vertices.front());
-            if(it == ml.vertices.end()) continue;
-            const double c = ml.parameter(static_cast<int>(it - ml.vertices.begin()));
-            const Loop_match& mm = reflected.lm.loops[k];
-            loops[l] = {mm.target, -mm.orientation, mm.offset + mm.orientation * c};
-          }
-        reflected.lm.loops = loops;
-        chosen = std::move(reflected);
+        chosen.r.mirrored = true;
+        warn(mirror_warning(element, segments[i].name, segments[0].name, chosen.residual, reflected.residual));
       }
     }
     r = chosen.r;
@@ -1293,9 +1368,15 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
   }
   for(std::size_t i = 0; i < m; ++i)
   {
+    if(i > 0) unfold(*surfaces[i], info, landmarks[i], result.triangles, positions[i]);
     result.segments[i].positions = positions[i];
     result.segments[i].unrefined = unrefined[i];
     result.segments[i].residual = i == 0 ? 0. : coverage_residual(*surfaces[i], positions[i], result.triangles);
+    result.segments[i].flipped_faces = static_cast<int>(flipped_faces(*surfaces[i], positions[i], result.triangles).size());
+    const double fraction = double(result.segments[i].flipped_faces) / std::max<std::size_t>(1, result.triangles.size());
+    if(fraction > options.flipped_warning_fraction)
+      warn(flipped_warning(element, segments[i].name, result.segments[i].flipped_faces, result.triangles.size(),
+                           result.segments[i].residual));
   }
   progress("correspondence of " + type_name, 1.);
   return result;

@@ -47,8 +47,20 @@ struct Dense_correspondence_options
   double refinement_step = 0.2;
   double sample_weight = 0.1;     ///< weight of E_sample against trace(Sigma)
   double boundary_weight = 10.;   ///< weight of E_boundary against trace(Sigma)
+  /// Coverage residual (fraction of the diagonal) above which a segment is
+  /// also matched against the mirrored template, to warn when only a
+  /// reflection would cover it (`Segment_correspondence::mirrored`).
+  double mirror_check_residual = 0.02;
+  /// Fraction of a segment's mapped template triangles that may face
+  /// against its surface (`Segment_correspondence::flipped_faces`) before a
+  /// warning names it.
+  double flipped_warning_fraction = 0.02;
   /// Called with a stage name and the fraction done (0..1).
   std::function<void(const std::string& stage, double fraction)> progress;
+  /// Called with each warning as it arises (they are also collected in
+  /// `Dense_correspondence::warnings`): a segment only a mirror image of the
+  /// template would cover, or one on which the correspondence folds.
+  std::function<void(const std::string& message)> warning;
 };
 
 /// \ingroup PkgMPMRef
@@ -77,13 +89,20 @@ struct Segment_correspondence
   int order = 0;                 ///< rank in which the segment was added (the template is 0)
   int iterations = 0;            ///< ICP iterations spent
   bool used_shape_space = false; ///< the PCA space was the coarse regularizer
-  /// The segment is a mirror image of the template (a left and a right
-  /// limb): the template's triangles face inwards on it.
+  /// The segment looks like a mirror image of the template (a left and a
+  /// right limb): the mirrored template covered it clearly better than any
+  /// orientation-preserving fit. `positions` are nevertheless that
+  /// orientation-preserving fit, never a reflection (whose triangles would
+  /// face inwards), and a warning names the segment.
   bool mirrored = false;
   int automatic_landmarks = 0;   ///< landmark pairs proposed automatically
   /// Root mean square distance of the segment's vertices to the mapped
   /// template, over the bounding-box diagonal (how well the template covers it).
   double residual = 0.;
+  /// Mapped template triangles whose normal points against the normal of
+  /// the segment's nearest face: the correspondence folds or turns the
+  /// part inside out there. About zero for a sound correspondence.
+  int flipped_faces = 0;
 };
 
 /// \ingroup PkgMPMRef
@@ -95,6 +114,9 @@ struct Dense_correspondence
   Correspondence_energies before; ///< energies before refinement
   Correspondence_energies after;  ///< energies after refinement (equal to `before` without it)
   int refinement_iterations = 0;  ///< accepted refinement steps
+  /// Warnings, each naming the type and segment (also passed to
+  /// `Dense_correspondence_options::warning`).
+  std::vector<std::string> warnings;
 };
 
 /// \ingroup PkgMPMRef
@@ -113,6 +135,13 @@ std::vector<std::vector<int>> boundary_loops(const Indexed_mesh& mesh);
 /// Laplacian regularizer, and finally refined by minimizing
 /// `E_boundary + E_sample + trace(Sigma)` with tangent steps projected back
 /// onto each segment. See `doc/MPM/Correspondence.md`.
+///
+/// Every fit preserves orientation (proper rigid motions, seams matched in
+/// their own direction): a segment that only a mirror image of the template
+/// would cover gets a warning and keeps the orientation-preserving fit
+/// (`Segment_correspondence::mirrored`); template triangles facing against
+/// a segment are counted (`Segment_correspondence::flipped_faces`) and a
+/// warning names a segment with more than `flipped_warning_fraction` of them.
 ///
 /// Throws `Input_error` naming the type and segment for a degenerate
 /// segment (no triangle, collinear or non-finite points), landmarks out of
