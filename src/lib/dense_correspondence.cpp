@@ -1119,9 +1119,11 @@ std::vector<int> flipped_faces(const Surface& s, const Point_matrix& y, const st
 // first rings inside a seam, where the boundary vertices are pinned to
 // their arc-length images on a jagged cut and the next ring, pulled to the
 // closest surface points, folds over them. The free vertices of flipped
-// triangles and their neighbours go to the mean of their neighbours and
-// back onto the segment, a few times; the result with fewest flipped
-// triangles is kept. Boundary and landmark vertices stay.
+// triangles and `rings` rings around them go to the mean of their
+// neighbours and back onto the segment; a pass that removes no fold widens
+// the region (a fold wider than two rings does not open otherwise: on the
+// PSB hands that halved the self-intersections left). The result with
+// fewest flipped triangles is kept. Boundary and landmark vertices stay.
 void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, const std::vector<Triangle>& triangles,
             Point_matrix& y)
 {
@@ -1130,15 +1132,20 @@ void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, co
   for(Eigen::Index v = 0; v < y.rows(); ++v) pinned[v] = info.loop[v] >= 0;
   for(const auto& [v, p] : lm.vertex_targets) pinned[v] = true;
   Point_matrix current = y;
-  for(int pass = 0; pass < 20 && !flipped.empty(); ++pass)
+  int rings = 1;
+  for(int pass = 0; pass < 60 && !flipped.empty(); ++pass)
   {
     std::vector<bool> moving(y.rows(), false);
     for(int f : flipped)
-      for(int v : triangles[f])
-      {
-        moving[v] = true;
-        for(int w : info.neighbours[v]) moving[w] = true;
-      }
+      for(int v : triangles[f]) moving[v] = true;
+    for(int r = 0; r < rings; ++r)
+    {
+      std::vector<bool> grown = moving;
+      for(Eigen::Index v = 0; v < y.rows(); ++v)
+        if(moving[v])
+          for(int w : info.neighbours[v]) grown[w] = true;
+      moving.swap(grown);
+    }
     const Point_matrix previous = current;
     for(Eigen::Index v = 0; v < y.rows(); ++v)
     {
@@ -1153,6 +1160,8 @@ void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, co
       y = current;
       flipped = std::move(now);
     }
+    else
+      rings = std::min(rings + 1, 8);
   }
 }
 

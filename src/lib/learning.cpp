@@ -820,11 +820,78 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
 
 namespace {
 
+// A segment of a part type in one input.
+struct Segment_ref
+{
+  int example, label;
+  std::vector<int> vertices;
+  std::vector<Triangle> triangles;
+};
+
+// One segment of a type to correspond, from its input: its own vertices,
+// the annotation's landmarks, and per seam vertex the type across the seam.
+Correspondence_segment correspondence_segment(const Training_input& input, const Segment_ref& r, const std::string& name,
+                                              const std::map<std::string, int>& tag_of_type)
+{
+  const Indexed_mesh& mesh = input.mesh.mesh;
+  Correspondence_segment c;
+  c.name = input.mesh.source + " label " + std::to_string(r.label);
+  c.mesh.points.resize(r.vertices.size(), 3);
+  std::unordered_map<int, int> local;
+  for(std::size_t k = 0; k < r.vertices.size(); ++k)
+  {
+    c.mesh.points.row(k) = mesh.points.row(r.vertices[k]);
+    local[r.vertices[k]] = static_cast<int>(k);
+  }
+  c.mesh.triangles = r.triangles;
+  const auto landmarks = input.annotation.landmarks_of_label.find(r.label);
+  if(landmarks != input.annotation.landmarks_of_label.end())
+    for(std::size_t k = 0; k < landmarks->second.size(); ++k)
+    {
+      const auto it = local.find(landmarks->second[k]);
+      if(it == local.end())
+        throw Input_error(input.annotation.source.empty() ? input.mesh.source + " annotation" : input.annotation.source,
+                          label_element(r.label, name) + ": landmark " + std::to_string(k),
+                          "vertex " + std::to_string(landmarks->second[k]) + " is not a vertex of this part");
+      c.landmarks.push_back(it->second);
+    }
+  c.seam_tags.assign(r.vertices.size(), -1);
+  for(int f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    const int other = input.mesh.face_labels[f];
+    if(other == r.label) continue;
+    const auto other_type = input.annotation.part_type_of_label.find(other);
+    for(int v : mesh.triangles[f])
+    {
+      const auto it = local.find(v);
+      if(it != local.end())
+        c.seam_tags[it->second] =
+          other_type == input.annotation.part_type_of_label.end() ? -1 : tag_of_type.at(other_type->second);
+    }
+  }
+  return c;
+}
+
+// Coverage residual (of the segment's diagonal) above which the template
+// did not find the segment: on the real hands a good fit stays under 1%, a
+// thumb base matched to the other proximal phalanges' template is at 11%.
+constexpr double max_correspondence_residual = 0.03;
+
+// Segments whose correspondence failed, ascending. When most failed, the
+// template is the odd one out (a thumb base among proximal phalanges).
+std::vector<std::size_t> failed_segments(const Dense_correspondence& c)
+{
+  std::vector<std::size_t> failed;
+  for(std::size_t i = 1; i < c.segments.size(); ++i)
+    if(c.segments[i].residual > max_correspondence_residual) failed.push_back(i);
+  if(2 * failed.size() > c.segments.size() - 1) return {0};
+  return failed;
+}
+
 // The first segment is the template. One of median size: a template much
 // finer than a segment crumples on it (hand_190: the largest proximal
 // phalanx, 1471 faces, on the smallest, 465, folded into 1347
 // self-intersecting face pairs), a much coarser one loses its detail.
-template <class Segment_ref>
 void put_median_segment_first(std::vector<Segment_ref>& refs)
 {
   std::vector<std::size_t> order(refs.size());
@@ -855,12 +922,6 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
         for(auto b = std::next(a); b != labels.end(); ++b) result.seams[e].insert({*a, *b});
   }
   // Segments of each annotated type, and the type index that tags seams.
-  struct Segment_ref
-  {
-    int example, label;
-    std::vector<int> vertices;
-    std::vector<Triangle> triangles;
-  };
   std::map<std::string, std::vector<Segment_ref>> segments_of_type;
   std::map<std::string, int> tag_of_type;
   std::vector<std::map<int, std::vector<int>>> faces(inputs.size());
@@ -888,71 +949,55 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
   int type_index = 0;
   for(auto& [name, refs] : segments_of_type)
   {
-    ++type_index;
-    put_median_segment_first(refs);
-    bool differ = false;
-    for(const Segment_ref& r : refs) differ = differ || r.triangles != refs.front().triangles;
-    if(refs.size() < 2 || !(differ || all_types)) continue;
-    // A segment to correspond must be one manifold piece (a soup of pieces
-    // stays legitimate for parts in known correspondence).
-    for(const Segment_ref& r : refs)
-      if(validated.insert(r.example).second) validate_segmentation(inputs[r.example].mesh);
-    if(options.progress) options.progress("correspondence of " + name, double(type_index - 1) / segments_of_type.size());
-    std::vector<Correspondence_segment> segments;
-    for(const Segment_ref& r : refs)
+    bool retry = true;
+    while(retry)
     {
-      const Training_input& input = inputs[r.example];
-      const Indexed_mesh& mesh = input.mesh.mesh;
-      Correspondence_segment c;
-      c.name = input.mesh.source + " label " + std::to_string(r.label);
-      c.mesh.points.resize(r.vertices.size(), 3);
-      std::unordered_map<int, int> local;
-      for(std::size_t k = 0; k < r.vertices.size(); ++k)
+      retry = false;
+      ++type_index;
+      put_median_segment_first(refs);
+      bool differ = false;
+      for(const Segment_ref& r : refs) differ = differ || r.triangles != refs.front().triangles;
+      if(refs.size() < 2 || !(differ || all_types)) continue;
+      // A segment to correspond must be one manifold piece (a soup of pieces
+      // stays legitimate for parts in known correspondence).
+      for(const Segment_ref& r : refs)
+        if(validated.insert(r.example).second) validate_segmentation(inputs[r.example].mesh);
+      if(options.progress) options.progress("correspondence of " + name, double(type_index - 1) / segments_of_type.size());
+      std::vector<Correspondence_segment> segments;
+      for(const Segment_ref& r : refs) segments.push_back(correspondence_segment(inputs[r.example], r, name, tag_of_type));
+      Dense_correspondence_options co = options.correspondence;
+      if(options.warning && !co.warning) co.warning = options.warning;
+      if(options.progress && !co.progress)
+        co.progress = [&](const std::string& stage, double) { options.progress(stage, double(type_index - 1) / segments_of_type.size()); };
+      Dense_correspondence c = compute_dense_correspondence(segments, name, co);
+      // A segment the template cannot cover keeps its own shape, as a type of
+      // its own; the others are put in correspondence again without it.
+      const std::vector<std::size_t> failed = failed_segments(c);
+      if(!failed.empty())
       {
-        c.mesh.points.row(k) = mesh.points.row(r.vertices[k]);
-        local[r.vertices[k]] = static_cast<int>(k);
-      }
-      c.mesh.triangles = r.triangles;
-      const auto landmarks = input.annotation.landmarks_of_label.find(r.label);
-      if(landmarks != input.annotation.landmarks_of_label.end())
-        for(std::size_t k = 0; k < landmarks->second.size(); ++k)
+        for(auto it = failed.rbegin(); it != failed.rend(); ++it)
         {
-          const auto it = local.find(landmarks->second[k]);
-          if(it == local.end())
-            throw Input_error(input.annotation.source.empty() ? input.mesh.source + " annotation" : input.annotation.source,
-                              label_element(r.label, name) + ": landmark " + std::to_string(k),
-                              "vertex " + std::to_string(landmarks->second[k]) + " is not a vertex of this part");
-          c.landmarks.push_back(it->second);
+          const Segment_ref& r = refs[*it];
+          const std::string own = name + "_label" + std::to_string(r.label);
+          if(options.warning)
+            options.warning(segments[*it].name + " (" + name + "): the type's template covers it poorly (residual " +
+                            std::to_string(100. * c.segments[*it].residual) + "% of its diagonal); it keeps its own shape as part type \"" + own + "\"");
+          result.inputs[r.example].annotation.part_type_of_label[r.label] = own;
+          refs.erase(refs.begin() + std::ptrdiff_t(*it));
         }
-      // Seam tags: the type of the part across each seam vertex.
-      c.seam_tags.assign(r.vertices.size(), -1);
-      for(int f = 0; f < mesh.number_of_faces(); ++f)
+        retry = true;
+        continue;
+      }
+      const Dense_correspondence& stored = result.types[name] = std::move(c);
+      for(std::size_t i = 0; i < refs.size(); ++i)
       {
-        const int other = input.mesh.face_labels[f];
-        if(other == r.label) continue;
-        const auto other_type = input.annotation.part_type_of_label.find(other);
-        for(int v : mesh.triangles[f])
-        {
-          const auto it = local.find(v);
-          if(it != local.end())
-            c.seam_tags[it->second] =
-              other_type == input.annotation.part_type_of_label.end() ? -1 : tag_of_type.at(other_type->second);
-        }
+        replaced[refs[i].example][refs[i].label] = stored.segments[i].positions;
+        result.detached[refs[i].example].insert(refs[i].label);
+        replaced_triangles[refs[i].example][refs[i].label] = &stored.triangles;
+        // Landmark k of every segment is the template's landmark vertex k.
+        replaced_landmarks[refs[i].example][refs[i].label] = segments.front().landmarks;
+        result.segments[name].push_back({refs[i].example, refs[i].label});
       }
-      segments.push_back(std::move(c));
-    }
-    Dense_correspondence_options co = options.correspondence;
-    if(options.progress && !co.progress)
-      co.progress = [&](const std::string& stage, double) { options.progress(stage, double(type_index - 1) / segments_of_type.size()); };
-    Dense_correspondence& c = result.types[name] = compute_dense_correspondence(segments, name, co);
-    for(std::size_t i = 0; i < refs.size(); ++i)
-    {
-      replaced[refs[i].example][refs[i].label] = c.segments[i].positions;
-      result.detached[refs[i].example].insert(refs[i].label);
-      replaced_triangles[refs[i].example][refs[i].label] = &c.triangles;
-      // Landmark k of every segment is the template's landmark vertex k.
-      replaced_landmarks[refs[i].example][refs[i].label] = segments.front().landmarks;
-      result.segments[name].push_back({refs[i].example, refs[i].label});
     }
   }
 
