@@ -872,6 +872,21 @@ Correspondence_segment correspondence_segment(const Training_input& input, const
   return c;
 }
 
+// True when some vertex of the triangles lies on no border edge.
+bool has_interior_vertex(const std::vector<Triangle>& triangles)
+{
+  std::map<std::pair<int, int>, int> uses;
+  for(const Triangle& t : triangles)
+    for(int k = 0; k < 3; ++k) ++uses[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  std::set<int> all, on_border;
+  for(const auto& [e, count] : uses)
+  {
+    all.insert({e.first, e.second});
+    if(count == 1) on_border.insert({e.first, e.second});
+  }
+  return on_border.size() < all.size();
+}
+
 // Coverage residual (of the segment's diagonal) above which the template
 // did not find the segment: on the real hands a good fit stays under 1%, a
 // thumb base matched to the other proximal phalanges' template is at 11%.
@@ -949,6 +964,19 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
   int type_index = 0;
   for(auto& [name, refs] : segments_of_type)
   {
+    // Segments `which` (ascending) leave the type, each a type of its own.
+    const auto give_own_types = [&, &name = name, &refs = refs](const std::vector<std::size_t>& which, const std::string& why) {
+      for(auto it = which.rbegin(); it != which.rend(); ++it)
+      {
+        const Segment_ref& r = refs[*it];
+        const std::string own = name + "_label" + std::to_string(r.label);
+        if(options.warning)
+          options.warning(inputs[r.example].mesh.source + ": " + label_element(r.label, name) + ": " + why +
+                          "; it keeps its own shape as part type " + quoted(own));
+        result.inputs[r.example].annotation.part_type_of_label[r.label] = own;
+        refs.erase(refs.begin() + std::ptrdiff_t(*it));
+      }
+    };
     bool retry = true;
     while(retry)
     {
@@ -962,6 +990,17 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       // stays legitimate for parts in known correspondence).
       for(const Segment_ref& r : refs)
         if(validated.insert(r.example).second) validate_segmentation(inputs[r.example].mesh);
+      // A sliver (every vertex on a seam, as the thin rings where an
+      // octopus's arms were cut twice) has no surface to correspond.
+      std::vector<std::size_t> slivers;
+      for(std::size_t i = 0; i < refs.size(); ++i)
+        if(!has_interior_vertex(refs[i].triangles)) slivers.push_back(i);
+      if(!slivers.empty())
+      {
+        give_own_types(slivers, "has no vertex off its seams, too thin to put in correspondence");
+        retry = true;
+        continue;
+      }
       if(options.progress) options.progress("correspondence of " + name, double(type_index - 1) / segments_of_type.size());
       std::vector<Correspondence_segment> segments;
       for(const Segment_ref& r : refs) segments.push_back(correspondence_segment(inputs[r.example], r, name, tag_of_type));
@@ -975,16 +1014,8 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       const std::vector<std::size_t> failed = failed_segments(c);
       if(!failed.empty())
       {
-        for(auto it = failed.rbegin(); it != failed.rend(); ++it)
-        {
-          const Segment_ref& r = refs[*it];
-          const std::string own = name + "_label" + std::to_string(r.label);
-          if(options.warning)
-            options.warning(segments[*it].name + " (" + name + "): the type's template covers it poorly (residual " +
-                            std::to_string(100. * c.segments[*it].residual) + "% of its diagonal); it keeps its own shape as part type \"" + own + "\"");
-          result.inputs[r.example].annotation.part_type_of_label[r.label] = own;
-          refs.erase(refs.begin() + std::ptrdiff_t(*it));
-        }
+        give_own_types(failed, failed.front() == 0 ? "as the template, it covers most of the type's other segments poorly"
+                                                   : "the type's template covers it poorly (coverage residual over 3% of its diagonal)");
         retry = true;
         continue;
       }
