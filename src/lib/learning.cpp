@@ -978,6 +978,7 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       }
     };
     bool retry = true;
+    int templates_failed = 0;
     while(retry)
     {
       retry = false;
@@ -1011,7 +1012,14 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       Dense_correspondence c = compute_dense_correspondence(segments, name, co);
       // A segment the template cannot cover keeps its own shape, as a type of
       // its own; the others are put in correspondence again without it.
-      const std::vector<std::size_t> failed = failed_segments(c);
+      std::vector<std::size_t> failed = failed_segments(c);
+      // A second template that fails as well: the type's segments are too
+      // unlike (long arms in different poses); none is put in correspondence.
+      if(!failed.empty() && failed.front() == 0 && templates_failed++ > 0)
+      {
+        failed.resize(refs.size());
+        std::iota(failed.begin(), failed.end(), 0);
+      }
       if(!failed.empty())
       {
         give_own_types(failed, failed.front() == 0 ? "as the template, it covers most of the type's other segments poorly"
