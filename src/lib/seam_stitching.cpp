@@ -193,22 +193,35 @@ private:
 
   int find(int i) { return classes_[i] == i ? i : classes_[i] = find(classes_[i]); }
 
+  // A kept part's border is chained over its original vertex ids, so that
+  // where it passes a vertex twice (two seams touching) it takes the same
+  // turns as the original loop it lies on.
   Part_border border_of(int label, const std::vector<int>& vertices) const
   {
-    std::unordered_map<int, int> local;
-    for(std::size_t i = 0; i < vertices.size(); ++i) local[vertices[i]] = int(i);
+    const bool rebuilt = detached_.count(label) > 0;
+    std::unordered_map<int, int> key_of_vertex, local_of_key;
+    for(std::size_t i = 0; i < vertices.size(); ++i)
+    {
+      const int key = rebuilt ? int(i) : original_vertex_[vertices[i]];
+      key_of_vertex[vertices[i]] = key;
+      local_of_key[key] = int(i);
+    }
     std::set<Edge_key> half_edges;
     for(int f = 0; f < rebuilt_.mesh.number_of_faces(); ++f)
       if(rebuilt_.face_labels[f] == label)
         for(int k = 0; k < 3; ++k)
-          half_edges.insert({local.at(rebuilt_.mesh.triangles[f][k]), local.at(rebuilt_.mesh.triangles[f][(k + 1) % 3])});
+          half_edges.insert({key_of_vertex.at(rebuilt_.mesh.triangles[f][k]),
+                             key_of_vertex.at(rebuilt_.mesh.triangles[f][(k + 1) % 3])});
     std::multimap<int, int> out;
     for(const auto& [a, b] : half_edges)
       if(!half_edges.count({b, a})) out.insert({a, b});
     Part_border border;
     border.loops = chain_loops(out);
+    for(std::vector<int>& loop : border.loops)
+      for(int& x : loop) x = local_of_key.at(x);
     double sum = 0.;
-    for(const auto& [a, b] : out) sum += (rebuilt_.mesh.points.row(vertices[a]) - rebuilt_.mesh.points.row(vertices[b])).norm();
+    for(const auto& [a, b] : out)
+      sum += (rebuilt_.mesh.points.row(vertices[local_of_key.at(a)]) - rebuilt_.mesh.points.row(vertices[local_of_key.at(b)])).norm();
     border.mean_edge = out.empty() ? 0. : sum / double(out.size());
     return border;
   }
