@@ -19,6 +19,7 @@ namespace mpm { Command make_spawn_command(); } // cmd_spawn.cpp
 namespace mpm { Command make_handles_command(); } // cmd_handles.cpp
 namespace mpm { Command make_cut_command(); } // cmd_cut.cpp
 namespace mpm { Command make_correspond_command(); } // cmd_correspond.cpp
+namespace mpm { Command make_fit_command(); } // cmd_fit.cpp
 
 namespace {
 
@@ -40,6 +41,7 @@ const std::vector<mpm::Command>& all_commands()
     mpm::make_spawn_command(),
     mpm::make_cut_command(),
     mpm::make_correspond_command(),
+    mpm::make_fit_command(),
   };
   return commands;
 }
