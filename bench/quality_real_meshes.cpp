@@ -135,8 +135,8 @@ void set_tip_handles(const Morphable_part_model& model, const Embedding_problem&
 }
 
 // A segment inserted before the tip of every chain (the edge from a tip
-// to its neighbour): how many insertions gave one closed surface, and the
-// largest residual energy per part among them.
+// to its neighbour): how many insertions gave one closed surface, the
+// largest residual energy per part among them, and why any failed.
 struct Insertions
 {
   int tried = 0, closed = 0;
@@ -153,8 +153,11 @@ Insertions insert_into_every_chain(Morphable_part_model model)
   for(const Part_edge& e : example.edges) ++degree[e.first], ++degree[e.second];
   for(std::size_t k = 0; k < example.edges.size(); ++k)
   {
+    // A chain: a tip docked to a segment that docks to one more part (the
+    // abdomen of an ant, docked to the thorax alone, is no chain).
     const Part_edge& e = example.edges[k];
-    if(degree[e.first] != 1 && degree[e.second] != 1) continue;
+    const bool chain = (degree[e.first] == 1 && degree[e.second] == 2) || (degree[e.second] == 1 && degree[e.first] == 2);
+    if(!chain) continue;
     ++r.tried;
     try
     {
@@ -167,7 +170,7 @@ Insertions insert_into_every_chain(Morphable_part_model model)
     }
     catch(const std::exception& error)
     {
-      if(r.failure.empty()) r.failure = error.what();
+      r.failure += std::string(r.failure.empty() ? "" : "; ") + error.what();
     }
   }
   return r;
@@ -197,7 +200,7 @@ int main(int argc, char** argv)
       if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | new self-int. | Hausdorff % | "
-               "insertions closed / tried | edit | converged, iterations | open edges | flipped | new self-int. | "
+               "insertions closed / tried (largest energy per part) | edit | converged, iterations | open edges | flipped | new self-int. | "
                "worst length change (parts out of range) |\n"
                "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
@@ -226,7 +229,8 @@ int main(int argc, char** argv)
            << rest.border_edges << " | "
            << std::max(0, rest.self_intersections - std::max(0, input_soundness.self_intersections)) << " | "
            << std::setprecision(2) << 100. * relative_hausdorff_distance(ex.mesh, input.mesh.mesh) << " | "
-           << inserted.closed << " / " << inserted.tried << " | ";
+           << inserted.closed << " / " << inserted.tried << " (" << std::setprecision(2)
+           << inserted.worst_energy_per_part << ") | ";
       if(!inserted.failure.empty()) std::cerr << name << ": an insertion failed: " << inserted.failure << "\n";
       struct Edit
       {

@@ -1,0 +1,135 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Real segmented meshes (Princeton Segmentation Benchmark, found through
+// MPM_PSB_DIR at run time or the define of the same name; skipped with a
+// message when absent): learned with proposed part types, the learned
+// example must be the user's closed surface again, and the edits must keep
+// it closed and sound. The bounds are the measured figures with a margin
+// (doc/MPM/Real_meshes.md).
+#include <CGAL/MPM/Assembly.h>
+#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Part_graph_editing.h>
+#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Part_type_proposal.h>
+#include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace {
+
+using namespace CGAL::MPM;
+
+std::string psb_file(const std::string& name)
+{
+  const char* dir = std::getenv("MPM_PSB_DIR");
+  return std::string(dir && *dir ? dir : MPM_PSB_DIR) + "/" + name;
+}
+
+#define MPM_REQUIRE_PSB(name)                                                                                     \
+  if(!std::ifstream(psb_file(name + ".off")).good())                                                              \
+  GTEST_SKIP() << psb_file(name + ".off") << " not found: the segmented meshes of ../shared/data/psb are not "  \
+                  "beside this checkout (set MPM_PSB_DIR)"
+
+struct Learned
+{
+  Training_input input;
+  Morphable_part_model model;
+};
+
+Learned learn(const std::string& name)
+{
+  Learned l;
+  l.input.mesh = read_labeled_mesh(psb_file(name + ".off"), psb_file(name + ".seg"));
+  l.input.annotation = propose_part_types(l.input.mesh).annotation;
+  l.model = learn_morphable_part_model({l.input});
+  return l;
+}
+
+class Segmented_meshes : public ::testing::TestWithParam<const char*>
+{
+};
+
+// The learned example of a closed one-piece mesh is one closed surface
+// again (its corresponded parts stitched back along their seams), close to
+// the input, and symmetrize and caricature keep it closed, converge, and
+// flip few faces.
+TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
+{
+  const std::string name = GetParam();
+  MPM_REQUIRE_PSB(name);
+  const Learned l = learn(name);
+  const Training_example& ex = l.model.examples.front();
+  int corresponded_types = 0;
+  for(const Part_type& t : l.model.types) corresponded_types += t.space.number_of_instances() >= 2;
+  EXPECT_GE(corresponded_types, 2) << name;
+
+  const Surface_soundness rest = check_surface(ex.mesh);
+  EXPECT_EQ(rest.components, 1) << name;
+  EXPECT_EQ(rest.border_edges, 0) << name;
+  EXPECT_EQ(rest.non_manifold_edges, 0) << name;
+  EXPECT_EQ(rest.degenerate_faces, 0) << name;
+  EXPECT_GE(rest.self_intersections, 0) << name;
+  EXPECT_LE(rest.self_intersections, 20) << name; // measured 7-8 (the input has none)
+  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.01) << name; // measured 0.55-0.69%
+
+  for(int edit = 0; edit < 2; ++edit)
+  {
+    const Embedding_problem problem = edit == 0 ? make_symmetrization_problem(l.model) : make_caricature_problem(l.model, 2.);
+    Embedding_solver solver(problem);
+    const Solve_report report = solver.solve();
+    EXPECT_TRUE(report.converged) << name << " edit " << edit;
+    Indexed_mesh after = problem.mesh;
+    after.points = solver.positions();
+    ASSERT_TRUE(after.points.allFinite());
+    const Surface_soundness s = check_surface(after, &problem.mesh);
+    EXPECT_EQ(s.components, 1) << name << " edit " << edit;
+    EXPECT_EQ(s.border_edges, 0) << name << " edit " << edit;
+    // Symmetrize flips 4-11 of 10,000-18,000 faces, caricature (factor 2)
+    // 48-255: the edit folds parts where they were folded a little at rest.
+    EXPECT_LT(double(s.flipped_faces), (edit == 0 ? 0.002 : 0.03) * double(after.triangles.size())) << name << " edit " << edit;
+  }
+}
+
+// One more segment before the last of the first chain that has three
+// segments: the result is one closed surface with one more part.
+TEST_P(Segmented_meshes, a_segment_inserted_into_a_chain_keeps_the_surface_closed)
+{
+  const std::string name = GetParam();
+  MPM_REQUIRE_PSB(name);
+  Learned l = learn(name);
+  add_repetition_rules(l.model);
+  Part_graph graph = part_graph_of_example(l.model, 0);
+  std::vector<int> degree(graph.nodes.size(), 0);
+  for(const Part_edge& e : graph.edges) ++degree[e.first], ++degree[e.second];
+  int edge = -1;
+  for(std::size_t k = 0; k < graph.edges.size() && edge < 0; ++k)
+  {
+    const Part_edge& e = graph.edges[k];
+    for(const auto& [segment, tip] : {std::make_pair(e.first, e.second), std::make_pair(e.second, e.first)})
+      if(degree[segment] == 2 && degree[tip] == 1 && l.model.types[graph.nodes[segment].type].space.number_of_instances() >= 2)
+        edge = int(k);
+  }
+  ASSERT_GE(edge, 0) << name << ": no chain ends in a segment of a learned type";
+  const std::size_t parts = graph.nodes.size();
+  insert_segment(l.model, graph, edge);
+  const Assembly a = assemble(l.model, graph);
+  EXPECT_EQ(a.graph.nodes.size(), parts + 1);
+  const Surface_soundness s = check_surface(a.mesh);
+  EXPECT_EQ(s.components, 1) << name;
+  EXPECT_EQ(s.border_edges, 0) << name;
+  EXPECT_EQ(s.non_manifold_edges, 0) << name;
+  EXPECT_TRUE(std::isfinite(a.residual_energy));
+}
+
+INSTANTIATE_TEST_SUITE_P(Psb, Segmented_meshes, ::testing::Values("hand_181", "octopus_137", "ant_81"));
+
+} // namespace
