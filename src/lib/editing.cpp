@@ -36,7 +36,7 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
     model, ex.graph, ex.mesh,
     [&policy](int, const Shape_space& space, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
               const std::string& type_name) { return policy(space, coordinates, rest, type_name); },
-    pair_sigmas, refined.empty() ? nullptr : &refined.nodes);
+    pair_sigmas, refined.empty() ? nullptr : &refined.nodes, true);
 }
 
 } // namespace

@@ -286,7 +286,7 @@ Point_matrix pair_target(const Docking_rule& rule, const std::vector<Seam_vertex
 Embedding_problem make_part_graph_problem(const Morphable_part_model& model, const Part_graph& graph,
                                           const Indexed_mesh& mesh, const Part_target_policy& policy,
                                           const Pair_sigma_policy& pair_sigmas,
-                                          const std::vector<Part_refinement>* refinements)
+                                          const std::vector<Part_refinement>* refinements, bool keep_inserted_offsets)
 {
   Embedding_problem problem;
   problem.mesh = mesh;
@@ -343,6 +343,15 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
       c.edges = r.edges;
       c.mean = refine_points(t.mean, r.inserted);
       c.modes = refine_modes(type.space.modes, r.inserted);
+      const Eigen::Index n = type.number_of_vertices, k = Eigen::Index(r.inserted.size());
+      if(keep_inserted_offsets && Eigen::Index(node.vertices.size()) == n + k)
+      {
+        // An inserted vertex keeps its rest offset from the chord of its
+        // split edge: where the other side's triangle has two edges on the
+        // seam, the chord would flatten that triangle.
+        const Point_matrix rest = to_space_frame(node.motion, gather_rows(mesh.points, node.vertices));
+        c.mean.bottomRows(k) += rest.bottomRows(k) - refine_points(rest.topRows(n), r.inserted).bottomRows(k);
+      }
     }
     c.sigmas = t.sigmas;
     c.border.assign(seams[i].begin(), seams[i].end());

@@ -7,6 +7,7 @@
 // `-o FILE` writes the fitted surface. `mpm fit --leave-one-out MESH ...`
 // learns from all meshes but one, fits that one, and does so for each.
 #include "cli.h"
+#include "mesh_files.h"
 
 #include <CGAL/MPM/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
@@ -18,55 +19,15 @@
 
 #include <chrono>
 #include <climits>
-#include <filesystem>
 #include <iostream>
 
 namespace mpm {
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace CGAL::MPM;
 
-// A mesh with its label and annotation files. `--labels` and
-// `--annotation` belong to the MESH before them, as for `mpm learn`.
-struct Mesh_files
-{
-  std::string mesh, labels, annotation;
-  bool labels_given = false, annotation_given = false;
-};
-
-std::vector<Mesh_files> collect_meshes(const Args& args, bool first_is_model)
-{
-  std::vector<Mesh_files> meshes;
-  bool model_seen = !first_is_model;
-  for(const Arg_item& item : args.items)
-  {
-    if(item.option.empty())
-    {
-      if(!model_seen) model_seen = true;
-      else meshes.push_back({item.value, "", "", false, false});
-      continue;
-    }
-    if(item.option != "labels" && item.option != "annotation") continue;
-    if(meshes.empty()) throw Usage_error("option --" + item.option + " must follow the MESH it belongs to");
-    Mesh_files& m = meshes.back();
-    bool& given = item.option == "labels" ? m.labels_given : m.annotation_given;
-    if(given) throw Usage_error("option --" + item.option + " given twice for " + m.mesh);
-    given = true;
-    (item.option == "labels" ? m.labels : m.annotation) = item.value;
-  }
-  for(Mesh_files& m : meshes)
-  {
-    std::error_code ec;
-    const std::string seg = fs::path(m.mesh).replace_extension(".seg").string();
-    const std::string json = fs::path(m.mesh).replace_extension(".json").string();
-    if(!m.labels_given) m.labels = fs::is_regular_file(seg, ec) ? seg : "components";
-    if(!m.annotation_given && fs::is_regular_file(json, ec)) m.annotation = json;
-  }
-  return meshes;
-}
-
+// A mesh read with its label and annotation files (`collect_mesh_files()`).
 Training_input read_input(const Mesh_files& files, Context& context, std::vector<std::string>& warnings)
 {
   Training_input input;
@@ -218,7 +179,7 @@ int run_fit_model(const Args& args, Context& context)
 {
   const auto start = std::chrono::steady_clock::now();
   const std::string model_path = args.positionals().front();
-  const std::vector<Mesh_files> meshes = collect_meshes(args, true);
+  const std::vector<Mesh_files> meshes = collect_mesh_files(args, true, false);
   if(meshes.size() != 1) throw Usage_error("'mpm fit' takes one MODEL and one MESH (or --leave-one-out MESH ...)");
   std::vector<std::string> warnings;
   context.progress.update("loading " + model_path, 0.);
@@ -275,7 +236,7 @@ void propose_missing_types(std::vector<Training_input>& inputs)
 
 int run_leave_one_out(const Args& args, Context& context)
 {
-  const std::vector<Mesh_files> files = collect_meshes(args, false);
+  const std::vector<Mesh_files> files = collect_mesh_files(args, false, false);
   if(files.size() < 2) throw Usage_error("'mpm fit --leave-one-out' needs at least two meshes");
   std::vector<std::string> warnings;
   std::vector<Training_input> inputs;

@@ -6,6 +6,7 @@
 // Meshes without an annotation whose segments are not in known
 // correspondence (real segmentations) get proposed part types first.
 #include "cli.h"
+#include "mesh_files.h"
 
 #include <CGAL/MPM/Annotation_io.h>
 #include <CGAL/MPM/Mesh_io.h>
@@ -17,65 +18,12 @@
 #include <chrono>
 #include <cmath>
 #include <climits>
-#include <filesystem>
 #include <functional>
 #include <iostream>
 
 namespace mpm {
 
 namespace {
-
-namespace fs = std::filesystem;
-
-// One MESH argument with the --labels/--annotation that follow it.
-struct Input_files
-{
-  std::string mesh, labels, annotation;
-  std::string write_annotation; // --write-annotation FILE: where the proposed types go
-  bool labels_given = false, annotation_given = false;
-  bool proposed = false; // part types proposed by propose_part_types()
-};
-
-std::vector<Input_files> collect_inputs(const Args& args)
-{
-  std::vector<Input_files> inputs;
-  for(const Arg_item& item : args.items)
-  {
-    if(item.option.empty())
-    {
-      inputs.push_back({item.value, "", "", "", false, false, false});
-      continue;
-    }
-    if(item.option != "labels" && item.option != "annotation" && item.option != "write-annotation") continue;
-    if(inputs.empty()) throw Usage_error("option --" + item.option + " must follow the MESH it belongs to");
-    Input_files& in = inputs.back();
-    if(item.option == "write-annotation")
-    {
-      if(!in.write_annotation.empty()) throw Usage_error("option --write-annotation given twice for " + in.mesh);
-      in.write_annotation = item.value;
-      continue;
-    }
-    bool& given = item.option == "labels" ? in.labels_given : in.annotation_given;
-    if(given) throw Usage_error("option --" + item.option + " given twice for " + in.mesh);
-    given = true;
-    (item.option == "labels" ? in.labels : in.annotation) = item.value;
-  }
-  for(Input_files& in : inputs)
-  {
-    std::error_code ec;
-    if(!in.labels_given)
-    {
-      const std::string seg = fs::path(in.mesh).replace_extension(".seg").string();
-      in.labels = fs::is_regular_file(seg, ec) ? seg : "components";
-    }
-    if(!in.annotation_given)
-    {
-      const std::string json = fs::path(in.mesh).replace_extension(".json").string();
-      if(fs::is_regular_file(json, ec)) in.annotation = json;
-    }
-  }
-  return inputs;
-}
 
 // The proposal's table: one row per segment, in breadth-first order from
 // the root, then the instance count of each type.
@@ -111,7 +59,7 @@ Json proposal_json(const std::string& mesh, const CGAL::MPM::Part_type_proposal&
 // (no two with identical connectivity: a real segmentation) get proposed
 // part types; synthetic inputs keep the learner's grouping by connectivity.
 // Returns the proposals, one per file (empty where none was made).
-std::vector<CGAL::MPM::Part_type_proposal> propose_missing_types(std::vector<Input_files>& files,
+std::vector<CGAL::MPM::Part_type_proposal> propose_missing_types(std::vector<Mesh_files>& files,
                                                                  std::vector<CGAL::MPM::Training_input>& inputs)
 {
   using namespace CGAL::MPM;
@@ -155,7 +103,7 @@ void warn_if_no_type_repeats(const CGAL::MPM::Morphable_part_model& model,
 
 // Proposes the missing part types, writes the requested annotations and
 // prints the tables (text) or returns them (JSON).
-Json propose_and_report(std::vector<Input_files>& files, std::vector<CGAL::MPM::Training_input>& inputs,
+Json propose_and_report(std::vector<Mesh_files>& files, std::vector<CGAL::MPM::Training_input>& inputs,
                         Context& context)
 {
   using namespace CGAL::MPM;
@@ -190,7 +138,7 @@ int run_learn(const Args& args, Context& context)
   const auto start = std::chrono::steady_clock::now();
   if(!args.has("output")) throw Usage_error("'mpm learn' needs -o MODEL");
   const std::string output = args.text("output");
-  std::vector<Input_files> files = collect_inputs(args);
+  std::vector<Mesh_files> files = collect_mesh_files(args, false, true);
 
   std::vector<std::string> warnings;
   auto warn = [&](const std::string& w) {
@@ -201,7 +149,7 @@ int run_learn(const Args& args, Context& context)
   std::vector<Training_input> inputs;
   for(std::size_t i = 0; i < files.size(); ++i)
   {
-    const Input_files& f = files[i];
+    const Mesh_files& f = files[i];
     context.progress.update("reading " + f.mesh, double(i) / double(files.size()));
     Training_input input;
     std::vector<std::string> read_warnings;
@@ -239,7 +187,7 @@ int run_learn(const Args& args, Context& context)
 
   Json summary = model_summary(model, output);
   Json in = Json::array();
-  for(const Input_files& f : files)
+  for(const Mesh_files& f : files)
     in.push_back({{"mesh", f.mesh},
                   {"labels", f.labels},
                   {"annotation", f.annotation.empty() ? Json(nullptr) : Json(f.annotation)},
@@ -255,7 +203,7 @@ int run_learn(const Args& args, Context& context)
   }
   std::cout << "Learned " << output << " from " << files.size() << " mesh" << (files.size() == 1 ? "" : "es")
             << " in " << format_number(seconds, 3) << " s\n";
-  for(const Input_files& f : files)
+  for(const Mesh_files& f : files)
     std::cout << "  " << f.mesh << "  labels: " << f.labels
               << "  annotation: "
               << (f.proposed ? "proposed" + (f.write_annotation.empty() ? std::string() : ", written to " + f.write_annotation)

@@ -151,8 +151,10 @@ std::map<std::string, double> leave_one_out_errors(const Morphable_part_model& m
     std::vector<Point_matrix> instances;
     for(const Part_node& node : example.graph.nodes)
       if(node.type == int(t)) {
-        Point_matrix p(Eigen::Index(node.vertices.size()), 3);
-        for(std::size_t i = 0; i < node.vertices.size(); ++i) p.row(Eigen::Index(i)) = example.mesh.points.row(node.vertices[i]);
+        // A stitched part lists the seam vertices inserted into it after its own.
+        const std::size_t n = std::size_t(model.types[t].number_of_vertices);
+        Point_matrix p(Eigen::Index(n), 3);
+        for(std::size_t i = 0; i < n; ++i) p.row(Eigen::Index(i)) = example.mesh.points.row(node.vertices[i]);
         instances.push_back(std::move(p));
       }
     if(instances.size() < 2) continue;

@@ -103,12 +103,16 @@ void seam_points(const Docking_rule& rule, const std::vector<Seam_vertex>& merge
 // `motion` (space frame -> rest placement), and every edge's `motion` (pair
 // space frame -> rest placement). `refinements` (one per node, optional):
 // parts with inserted seam vertices (their means and modes interpolated,
-// their triangles split; the inserted vertices fade like the seam). Pair targets are assembled from the placed
+// their triangles split; the inserted vertices fade like the seam; with
+// `keep_inserted_offsets`, as for a stitched training example whose rest
+// positions are the truth, an inserted vertex's target keeps its rest offset
+// from the chord it is interpolated on). Pair targets are assembled from the placed
 // part targets (parts and pairs ask for the same shape), see `pair_target`.
 Embedding_problem make_part_graph_problem(const Morphable_part_model& model, const Part_graph& graph,
                                           const Indexed_mesh& mesh, const Part_target_policy& policy,
                                           const Pair_sigma_policy& pair_sigmas,
-                                          const std::vector<Part_refinement>* refinements = nullptr);
+                                          const std::vector<Part_refinement>* refinements = nullptr,
+                                          bool keep_inserted_offsets = false);
 
 // The pair geometry of two placed part targets (see editing.cpp's history):
 // the second part is placed on the first by their shared seam (boundary
