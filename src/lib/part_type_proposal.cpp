@@ -430,7 +430,8 @@ void validate_seam_counts(const std::vector<Training_input>& inputs)
   }
   for(const auto& [type, list] : members)
   {
-    const bool mixed = std::any_of(list.begin(), list.end(), [&](const Member& m) { return m.loops != list[0].loops; });
+    const int first_loops = list[0].loops;
+    const bool mixed = std::any_of(list.begin(), list.end(), [first_loops](const Member& m) { return m.loops != first_loops; });
     if(!mixed) continue;
     std::string detail;
     for(const Member& m : list)
