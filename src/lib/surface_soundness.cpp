@@ -6,6 +6,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -107,9 +108,14 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
 
 double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
 {
+  // Only the surfaces are compared: a soup that is no polygon mesh (a face
+  // turned the other way, a non-manifold edge) is oriented and split first.
   const auto to_mesh = [](const Indexed_mesh& m) {
+    std::vector<Point_3> points = points_of(m);
+    std::vector<std::vector<std::size_t>> faces = faces_of(m);
+    if(!PMP::is_polygon_soup_a_polygon_mesh(faces)) PMP::orient_polygon_soup(points, faces);
     Mesh sm;
-    PMP::polygon_soup_to_polygon_mesh(points_of(m), faces_of(m), sm);
+    PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
     return sm;
   };
   const Mesh ma = to_mesh(a), mb = to_mesh(b);
