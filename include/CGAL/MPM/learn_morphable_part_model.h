@@ -53,8 +53,8 @@ struct Corresponded_training
   /// `Dense_correspondence::segments`.
   std::map<std::string, std::vector<std::pair<int, int>>> segments;
   /// Per input: the label pairs that shared a seam (a vertex) before the
-  /// rebuild. A rebuilt part that had seams docks (generalized docking)
-  /// only to its seam neighbours, not to whatever else is near.
+  /// rebuild. A rebuilt part that had seams is stitched to its seam
+  /// neighbours and docks to nothing else, however near.
   std::vector<std::set<std::pair<int, int>>> seams;
   /// Per input: the labels of the rebuilt parts.
   std::vector<std::set<int>> detached;
