@@ -7,6 +7,8 @@
 #include <CGAL/MPM/Dense_correspondence.h>
 #include <CGAL/MPM/Mesh_io.h>
 
+#include "Tube_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,13 +40,7 @@ Indexed_mesh oblique_tube(int rings, int sides)
       const double z = 4. * u + (1. - u) * 0.5 * x + u * 0.5 * y;
       m.points.row(r * sides + s) << x + 0.6 * z * z / 16., y, z;
     }
-  for(int r = 0; r + 1 < rings; ++r)
-    for(int s = 0; s < sides; ++s)
-    {
-      const int a = r * sides + s, b = r * sides + (s + 1) % sides, c = a + sides, d = b + sides;
-      m.triangles.push_back({a, b, d});
-      m.triangles.push_back({a, d, c});
-    }
+  m.triangles = mpm_test::tube_triangles(rings, sides);
   return m;
 }
 

@@ -4,6 +4,7 @@
 // Dense correspondence of same-type parts with different triangulations:
 // errors against the synthetic ground truth after independent remeshing,
 // learning from such parts, and bad input.
+#include "Tube_mesh.h"
 #include "Tool_test_support.h"
 
 #include <CGAL/MPM/Correspondence_evaluation.h>
@@ -56,13 +57,7 @@ Indexed_mesh tube(int rings, int sides, double length)
   for(int r = 0; r < rings; ++r)
     for(int s = 0; s < sides; ++s)
       m.points.row(r * sides + s) << std::cos(2 * pi * s / sides), std::sin(2 * pi * s / sides), length * r / (rings - 1);
-  for(int r = 0; r + 1 < rings; ++r)
-    for(int s = 0; s < sides; ++s)
-    {
-      const int a = r * sides + s, b = r * sides + (s + 1) % sides, c = a + sides, d = b + sides;
-      m.triangles.push_back({a, b, d});
-      m.triangles.push_back({a, d, c});
-    }
+  m.triangles = mpm_test::tube_triangles(rings, sides);
   return m;
 }
 
