@@ -70,7 +70,7 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   r.iterations = report.iterations;
   Indexed_mesh after = problem.mesh;
   after.points = solver.positions();
-  r.soundness = check_surface(after, &problem.mesh);
+  r.soundness = check_surface(after, &problem.mesh, &model.examples.front().face_labels);
   r.new_self_intersections = std::max(0, r.soundness.self_intersections - std::max(0, rest.self_intersections));
   std::map<int, std::pair<double, double>> range; // per type: rest lengths
   const Training_example& ex = model.examples.front();
@@ -180,7 +180,7 @@ std::string edit_cells(const Edit_result& r)
 {
   std::ostringstream s;
   s << (r.converged ? "yes " : "no ") << r.iterations << " | " << r.soundness.border_edges << " | "
-    << r.soundness.flipped_faces << " | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
+    << r.soundness.flipped_faces << " | " << r.soundness.inverted_faces << " | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
     << 100. * r.worst_length_change << "% (" << r.parts_outside_range << ")";
   return s.str();
 }
@@ -200,9 +200,9 @@ int main(int argc, char** argv)
       if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | new self-int. | Hausdorff % | "
-               "insertions closed / tried (largest energy per part) | edit | converged, iterations | open edges | flipped | new self-int. | "
+               "insertions closed / tried (largest energy per part) | edit | converged, iterations | open edges | turned > 90 deg | inverted in part | new self-int. | "
                "worst length change (parts out of range) |\n"
-               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: |\n";
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
   {
     try

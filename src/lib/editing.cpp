@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Editing.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Surface_soundness.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
+#include <CGAL/MPM/internal/Shape_exaggeration.h>
 
 #include <functional>
 #include <set>
@@ -13,13 +15,8 @@ namespace MPM {
 namespace {
 
 using internal::Part_target;
-using Target_policy = std::function<Part_target(const Shape_space& space, const Eigen::VectorXd& coordinates,
-                                                const Point_matrix& rest_in_space_frame, const std::string& type_name)>;
-
-Point_matrix mode_displacement(const Shape_space& space, const Eigen::VectorXd& coordinates)
-{
-  return space.shape(coordinates) - space.mean;
-}
+using Target_policy = std::function<Part_target(const Part_type& type, const Eigen::VectorXd& coordinates,
+                                                const Point_matrix& rest_in_space_frame)>;
 
 // The clusters of example `example` over its own mesh (the construction is
 // shared with assembly, see internal/Part_graph_problem.h).
@@ -34,8 +31,8 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
   const internal::Graph_refinement refined = internal::refine_part_graph(model, ex.graph);
   return internal::make_part_graph_problem(
     model, ex.graph, ex.mesh,
-    [&policy](int, const Shape_space& space, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
-              const std::string& type_name) { return policy(space, coordinates, rest, type_name); },
+    [&](int node, const Shape_space&, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
+        const std::string&) { return policy(model.types[ex.graph.nodes[node].type], coordinates, rest); },
     pair_sigmas, refined.empty() ? nullptr : &refined.nodes, true);
 }
 
@@ -57,19 +54,50 @@ Eigen::VectorXd isotropic_sigmas(const Shape_space& space, double relative)
   return Eigen::VectorXd::Constant(space.sigmas.size(), relative * largest);
 }
 
+// The paper's caricature: the part's coordinates scaled (`by_rotations`
+// false), or the same deviation scaled as local rotations and stretches
+// (see exaggeration_offsets()). What the subspace does not explain stays.
+Point_matrix exaggerated_target(const Part_type& type, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
+                                double factor, bool by_rotations)
+{
+  const Shape_space& space = type.space;
+  if(by_rotations)
+    return rest + internal::exaggeration_offsets(space.mean, space.shape(coordinates), type.triangles, factor);
+  return rest + (factor - 1.) * (space.shape(coordinates) - space.mean);
+}
+
+bool turns_a_face_inside_out(const Part_type& type, const Point_matrix& rest, const Point_matrix& target)
+{
+  Indexed_mesh before, after;
+  before.triangles = after.triangles = type.triangles;
+  before.points = rest;
+  after.points = target;
+  return inverted_faces(after, before) > 0;
+}
+
 } // namespace
 
 Embedding_problem make_caricature_problem(const Morphable_part_model& model, double factor, int example)
 {
   if(!std::isfinite(factor)) throw Input_error("caricature", "factor", "must be finite");
-  return make_problem(model, example, [factor](const Shape_space& space, const Eigen::VectorXd& coordinates,
-                                               const Point_matrix& rest, const std::string&) {
+  // Scaled coordinates are exact for proportions but fold a part whose
+  // deviation is a bend (the inside of a knuckle turns over). When they
+  // would turn a face of some part inside out, every part is exaggerated by
+  // its local rotations instead: one rule for all, so that neighbouring
+  // parts agree at their seams (mixing the two left more folds).
+  bool by_rotations = false, folds = false;
+  const auto policy = [factor, &by_rotations, &folds](const Part_type& type, const Eigen::VectorXd& coordinates,
+                                                      const Point_matrix& rest) {
     Part_target t;
-    t.mean = rest;
-    if(factor != 1.) t.mean += (factor - 1.) * mode_displacement(space, coordinates);
-    t.sigmas = space.sigmas;
+    t.mean = exaggerated_target(type, coordinates, rest, factor, by_rotations);
+    t.sigmas = type.space.sigmas;
+    if(!by_rotations && factor != 1. && turns_a_face_inside_out(type, rest, t.mean)) folds = true;
     return t;
-  }, learned_sigmas);
+  };
+  Embedding_problem problem = make_problem(model, example, policy, learned_sigmas);
+  if(!folds) return problem;
+  by_rotations = true;
+  return make_problem(model, example, policy, learned_sigmas);
 }
 
 Embedding_problem make_symmetrization_problem(const Morphable_part_model& model, int example,
@@ -85,14 +113,15 @@ Embedding_problem make_symmetrization_problem(const Morphable_part_model& model,
       throw Input_error("symmetrization", "part type \"" + name + "\"",
                         "needs " + std::to_string(model.types[t].space.number_of_modes()) + " finite coordinates");
   }
-  return make_problem(model, example, [&options](const Shape_space& space, const Eigen::VectorXd&,
-                                                 const Point_matrix& rest, const std::string& type_name) {
+  return make_problem(model, example, [&options](const Part_type& type, const Eigen::VectorXd&,
+                                                 const Point_matrix& rest) {
+    const Shape_space& space = type.space;
     Part_target t;
     if(space.number_of_instances() < 2)
       t.mean = rest; // a single instance has nothing to be symmetric with
     else
     {
-      const auto it = options.type_coordinates.find(type_name);
+      const auto it = options.type_coordinates.find(type.name);
       t.mean = it == options.type_coordinates.end() ? space.mean : space.shape(it->second);
     }
     t.sigmas = isotropic_sigmas(space, options.relative_sigma);

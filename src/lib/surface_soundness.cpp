@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/Input_error.h>
 
 #include <Eigen/Geometry>
 
@@ -72,7 +73,8 @@ Eigen::Vector3d normal_of(const Indexed_mesh& mesh, const Triangle& t)
 
 } // namespace
 
-Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference)
+Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference,
+                                const std::vector<int>* face_groups)
 {
   Surface_soundness s;
   s.components = components_of(mesh);
@@ -102,8 +104,40 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
   {
     s.flipped_faces = 0;
     for(const Triangle& t : mesh.triangles) s.flipped_faces += normal_of(mesh, t).dot(normal_of(*reference, t)) < 0.;
+    s.inverted_faces = inverted_faces(mesh, *reference, face_groups);
   }
   return s;
+}
+
+int inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference, const std::vector<int>* face_groups)
+{
+  if(reference.triangles != mesh.triangles)
+    throw Input_error("inverted_faces", "reference", "does not have the mesh's triangles");
+  if(face_groups && face_groups->size() != mesh.triangles.size())
+    throw Input_error("inverted_faces", "face groups",
+                      "has " + std::to_string(face_groups->size()) + " entries for " +
+                        std::to_string(mesh.triangles.size()) + " faces");
+  const std::vector<int> group = face_groups ? *face_groups : std::vector<int>(mesh.triangles.size(), 0);
+  std::map<int, std::vector<int>> vertices_of_group;
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for(int v : mesh.triangles[f]) vertices_of_group[group[f]].push_back(v);
+  std::map<int, Eigen::Matrix3d> rotation;
+  for(auto& [g, v] : vertices_of_group)
+  {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    Eigen::Matrix3Xd from(3, v.size()), to(3, v.size());
+    for(std::size_t i = 0; i < v.size(); ++i)
+    {
+      from.col(i) = reference.points.row(v[i]).transpose();
+      to.col(i) = mesh.points.row(v[i]).transpose();
+    }
+    rotation[g] = Eigen::umeyama(from, to, false).topLeftCorner<3, 3>();
+  }
+  int inverted = 0;
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    inverted += normal_of(mesh, mesh.triangles[f]).dot(rotation[group[f]] * normal_of(reference, mesh.triangles[f])) < 0.;
+  return inverted;
 }
 
 double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)

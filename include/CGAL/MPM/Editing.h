@@ -57,7 +57,11 @@ Embedding_problem make_symmetrization_problem(const Morphable_part_model& model,
 /// Caricature (factor > 1) or anti-shape (factor < 0) of example `example`:
 /// each instance's coordinates are scaled away from its type's mean by
 /// `factor` (within the subspace); the part of its shape outside the
-/// subspace is kept. Factor 1 is the deformation problem itself.
+/// subspace is kept. Where that would turn a face of the part inside out
+/// (a bent segment whose bend is doubled), the deviation is scaled as local
+/// deformations instead (rotation angles and stretches of every vertex's
+/// neighbourhood, integrated back), so that the segment bends further
+/// instead of folding. Factor 1 is the deformation problem itself.
 Embedding_problem make_caricature_problem(const Morphable_part_model& model, double factor, int example = 0);
 
 } // namespace MPM

@@ -23,14 +23,31 @@ struct Surface_soundness
   /// Faces whose normal turned by more than 90 degrees against the same
   /// face of the reference (-1 without a reference).
   int flipped_faces = -1;
+  /// Faces turned inside out within their group (for an edit, their part):
+  /// the normal points against the reference's once the best rotation of
+  /// the group (Kabsch) is taken out, so a part that turns as a whole, as a
+  /// bent finger does, counts none. -1 without a reference.
+  int inverted_faces = -1;
 };
 
 /// \ingroup PkgMPMRef
 /// Checks `mesh` with CGAL's Polygon_mesh_processing (connected components,
 /// self-intersections, degenerate faces). With `reference` (the same
 /// connectivity at other positions, for example before an edit) also counts
-/// the faces the edit flipped.
-Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference = nullptr);
+/// the faces the edit flipped and those it turned inside out within their
+/// group in `face_groups` (one group id per face, for example a model's
+/// `Training_example::face_labels`; without it the mesh is one group).
+Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference = nullptr,
+                                const std::vector<int>* face_groups = nullptr);
+
+/// \ingroup PkgMPMRef
+/// Faces of `mesh` turned inside out against `reference` (the same
+/// triangles at other positions) within their group in `face_groups` (one
+/// group id per face; without it the mesh is one group): the face's normal
+/// points against the reference's once the group's best rotation (Kabsch)
+/// is taken out. See `Surface_soundness::inverted_faces`.
+int inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference,
+                   const std::vector<int>* face_groups = nullptr);
 
 /// \ingroup PkgMPMRef
 /// Symmetric Hausdorff distance between two surfaces, approximated by

@@ -1,0 +1,63 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Flipped and inverted faces: a part that turns as a whole flips faces but
+// inverts none; a mirrored part is inside out.
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Surface_soundness.h>
+
+#include "Tube_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace {
+
+using namespace CGAL::MPM;
+
+// Two tubes side by side (groups 0 and 1), each 10 rings of 12 sides.
+Indexed_mesh two_tubes()
+{
+  Indexed_mesh m;
+  const std::vector<Triangle> tube = mpm_test::tube_triangles(10, 12);
+  m.points.resize(240, 3);
+  for(int k = 0; k < 2; ++k)
+  {
+    for(int r = 0; r < 10; ++r)
+      for(int s = 0; s < 12; ++s)
+        m.points.row(k * 120 + r * 12 + s) << 3. * k + std::cos(M_PI * s / 6), std::sin(M_PI * s / 6), 0.5 * r;
+    for(Triangle t : tube)
+    {
+      for(int& v : t) v += 120 * k;
+      m.triangles.push_back(t);
+    }
+  }
+  return m;
+}
+
+} // namespace
+
+TEST(Surface_soundness, a_part_turned_as_a_whole_flips_faces_but_inverts_none)
+{
+  const Indexed_mesh rest = two_tubes();
+  std::vector<int> groups(rest.triangles.size(), 0);
+  std::fill(groups.begin() + groups.size() / 2, groups.end(), 1);
+  Indexed_mesh turned = rest;
+  const Eigen::Matrix3d half_turn = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  for(int v = 120; v < 240; ++v) turned.points.row(v) = (half_turn * rest.points.row(v).transpose()).transpose();
+  const Surface_soundness s = check_surface(turned, &rest, &groups);
+  EXPECT_GT(s.flipped_faces, 100);
+  EXPECT_EQ(s.inverted_faces, 0);
+  // Without the groups the two tubes are one piece, which no rotation turns back.
+  EXPECT_GT(inverted_faces(turned, rest), 100);
+
+  Indexed_mesh mirrored = rest;
+  for(int v = 120; v < 240; ++v) mirrored.points(v, 0) = 6. - rest.points(v, 0);
+  EXPECT_GT(inverted_faces(mirrored, rest, &groups), 108); // most of the mirrored tube's 216
+
+  groups.pop_back();
+  EXPECT_THROW(inverted_faces(turned, rest, &groups), Input_error);
+}
