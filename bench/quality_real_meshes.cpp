@@ -40,7 +40,10 @@ struct Edit_result
   bool converged = false;
   int iterations = 0;
   Surface_soundness soundness;
+  int new_inverted = 0;      // faces inside out within their part that were not folded at rest
+  int unfolded = 0;          // inverted against the rest because the edit unfolded a rest fold
   int new_self_intersections = 0;
+  double drift = 0.; // largest move in ten more iterations after the solve, over the diagonal
   double worst_length_change = 0.; // largest |length / rest length - 1| of a part
   int parts_outside_range = 0;     // parts whose length leaves their type's range (+-10%)
 };
@@ -62,7 +65,7 @@ Point_matrix rows(const Point_matrix& p, const std::vector<int>& v, std::size_t 
 }
 
 Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem& problem, Embedding_solver& solver,
-                     const Surface_soundness& rest)
+                     const Surface_soundness& rest, const std::vector<int>& folded_at_rest)
 {
   Edit_result r;
   const Solve_report report = solver.solve();
@@ -71,6 +74,8 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   Indexed_mesh after = problem.mesh;
   after.points = solver.positions();
   r.soundness = check_surface(after, &problem.mesh, &model.examples.front().face_labels);
+  for(int f : inverted_faces(after, problem.mesh, &model.examples.front().face_labels))
+    ++(std::binary_search(folded_at_rest.begin(), folded_at_rest.end(), f) ? r.unfolded : r.new_inverted);
   r.new_self_intersections = std::max(0, r.soundness.self_intersections - std::max(0, rest.self_intersections));
   std::map<int, std::pair<double, double>> range; // per type: rest lengths
   const Training_example& ex = model.examples.front();
@@ -90,6 +95,11 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
     const auto [low, high] = range.at(node.type);
     r.parts_outside_range += now < low / 1.1 || now > high * 1.1;
   }
+  // Whether the solve has settled: the tolerance is relative to the energy,
+  // which says little when the energy is small or large.
+  const double diagonal = (after.points.colwise().maxCoeff() - after.points.colwise().minCoeff()).norm();
+  for(int k = 0; k < 10; ++k) solver.iterate();
+  r.drift = (solver.positions() - after.points).rowwise().norm().maxCoeff() / diagonal;
   return r;
 }
 
@@ -179,8 +189,9 @@ Insertions insert_into_every_chain(Morphable_part_model model)
 std::string edit_cells(const Edit_result& r)
 {
   std::ostringstream s;
-  s << (r.converged ? "yes " : "no ") << r.iterations << " | " << r.soundness.border_edges << " | "
-    << r.soundness.flipped_faces << " | " << r.soundness.inverted_faces << " | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
+  s << (r.converged ? "yes " : "no ") << r.iterations << " | " << std::setprecision(2) << 100. * r.drift << " | "
+    << r.soundness.border_edges << " | "
+    << r.soundness.flipped_faces << " | " << r.new_inverted << " (" << r.unfolded << ") | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
     << 100. * r.worst_length_change << "% (" << r.parts_outside_range << ")";
   return s.str();
 }
@@ -199,10 +210,10 @@ int main(int argc, char** argv)
     for(const auto& entry : fs::directory_iterator(options.text("data")))
       if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
-  std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | new self-int. | Hausdorff % | "
-               "insertions closed / tried (largest energy per part) | edit | converged, iterations | open edges | turned > 90 deg | inverted in part | new self-int. | "
+  std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | folded faces | new self-int. | Hausdorff % | "
+               "insertions closed / tried (largest energy per part) | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | new inverted in part (rest folds unfolded) | new self-int. | "
                "worst length change (parts out of range) |\n"
-               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
   {
     try
@@ -220,13 +231,14 @@ int main(int argc, char** argv)
       const Training_example& ex = model.examples.front();
       const Surface_soundness input_soundness = check_surface(input.mesh.mesh);
       const Surface_soundness rest = check_surface(ex.mesh);
+      const std::vector<int> folded = folded_faces(ex.mesh, input.mesh.mesh);
       int corresponded = 0;
       for(const Part_type& t : model.types) corresponded += t.space.number_of_instances() >= 2;
       const Insertions inserted = insert_into_every_chain(model);
       std::ostringstream head;
       head << "| " << name << " | " << model.types.size() << " (" << corresponded << ") | " << std::setprecision(2)
            << seconds << " | " << rest.components << " | "
-           << rest.border_edges << " | "
+           << rest.border_edges << " | " << folded.size() << " | "
            << std::max(0, rest.self_intersections - std::max(0, input_soundness.self_intersections)) << " | "
            << std::setprecision(2) << 100. * relative_hausdorff_distance(ex.mesh, input.mesh.mesh) << " | "
            << inserted.closed << " / " << inserted.tried << " (" << std::setprecision(2)
@@ -246,8 +258,8 @@ int main(int argc, char** argv)
       {
         Embedding_solver solver(e.problem);
         if(e.drag) set_tip_handles(model, e.problem, solver);
-        std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | ") << e.name << " | "
-                  << edit_cells(evaluate(model, e.problem, solver, rest)) << " |\n"
+        std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | | ") << e.name << " | "
+                  << edit_cells(evaluate(model, e.problem, solver, rest, folded)) << " |\n"
                   << std::flush;
       }
     }

@@ -72,7 +72,7 @@ bool turns_a_face_inside_out(const Part_type& type, const Point_matrix& rest, co
   before.triangles = after.triangles = type.triangles;
   before.points = rest;
   after.points = target;
-  return inverted_faces(after, before) > 0;
+  return !inverted_faces(after, before).empty();
 }
 
 } // namespace

@@ -382,14 +382,19 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   // Cotangent weights measured on the mean: half the cotangent of the
   // opposite angle per adjacent triangle. Negative ones are clamped (to a
   // small fraction of the mean weight) so that the matrix stays positive
-  // definite and no edge is left without stiffness.
+  // definite and no edge is left without stiffness. Large ones are bounded
+  // as CGAL's clamped cotangent bounds them (cosine within +-0.999, as in
+  // its ARAP deformation): a sliver of a scanned mesh (cotangent 4e14 on a
+  // PSB octopus) otherwise drowned the whole system in rounding, and the
+  // energy rose from the rest pose.
+  const double largest_cotangent = 0.999 / std::sqrt(1. - 0.999 * 0.999);
   std::map<std::pair<int, int>, double> cotangent;
   for(const Triangle& t : c.triangles)
     for(int k = 0; k < 3; ++k)
     {
       const int a = t[k], b = t[(k + 1) % 3], o = t[(k + 2) % 3];
       const double cot = CGAL::Weights::cotangent(point(c.mean, a), point(c.mean, o), point(c.mean, b));
-      cotangent[{std::min(a, b), std::max(a, b)}] += std::isfinite(cot) ? 0.5 * cot : 0.;
+      cotangent[{std::min(a, b), std::max(a, b)}] += std::isfinite(cot) ? 0.5 * std::min(cot, largest_cotangent) : 0.;
     }
   double positive_sum = 0.;
   int positive_count = 0;
@@ -464,14 +469,38 @@ Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const E
 }
 
 // Pieces no handle reaches are anchored weakly to the rest positions: the
-// energy is blind to their translation and rotation.
+// energy is blind to their translation and rotation. One vertex per piece,
+// the one nearest its rest centroid, fixes the translation and pulls on
+// nothing else. Anchoring every vertex also pulled the piece's orientation
+// back toward rest, ever more weakly: an edit that turns parts (symmetrize)
+// then crept for a hundred iterations after its shape had settled.
 void Embedding_solver::Impl::compute_anchor()
 {
   std::vector<bool> held(n, false);
   for(int v : handle_vertices) held[component[v]] = true;
-  anchor = Eigen::VectorXd::Zero(n);
+  std::map<int, std::pair<Eigen::RowVector3d, int>> centroid; // per free piece: sum of points, count
   for(int v = 0; v < n; ++v)
-    if(!held[component[v]]) anchor[v] = options.anchor_weight * mean_diagonal;
+    if(!held[component[v]])
+    {
+      auto& [sum, count] = centroid.try_emplace(component[v], Eigen::RowVector3d::Zero(), 0).first->second;
+      sum += mesh.points.row(v);
+      ++count;
+    }
+  std::map<int, int> nearest;
+  for(int v = 0; v < n; ++v)
+  {
+    const auto it = centroid.find(component[v]);
+    if(it == centroid.end()) continue;
+    const Eigen::RowVector3d c = it->second.first / it->second.second;
+    const auto [best, added] = nearest.try_emplace(component[v], v);
+    if(!added && (mesh.points.row(v) - c).squaredNorm() < (mesh.points.row(best->second) - c).squaredNorm())
+      best->second = v;
+  }
+  // The weight of the piece's vertices together, so that the system is as
+  // well conditioned as with every vertex anchored.
+  anchor = Eigen::VectorXd::Zero(n);
+  for(const auto& [piece, v] : nearest)
+    anchor[v] = options.anchor_weight * mean_diagonal * centroid.at(piece).second;
 }
 
 void Embedding_solver::Impl::factor()

@@ -5,7 +5,11 @@
 
 #include <Eigen/Geometry>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -71,6 +75,18 @@ Eigen::Vector3d normal_of(const Indexed_mesh& mesh, const Triangle& t)
   return (b - a).cross(c - a);
 }
 
+// Only the surface counts: a soup that is no polygon mesh (a face turned
+// the other way, a non-manifold edge) is oriented and split first.
+Mesh surface_mesh_of(const Indexed_mesh& m)
+{
+  std::vector<Point_3> points = points_of(m);
+  std::vector<std::vector<std::size_t>> faces = faces_of(m);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(faces)) PMP::orient_polygon_soup(points, faces);
+  Mesh sm;
+  PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
+  return sm;
+}
+
 } // namespace
 
 Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference,
@@ -104,12 +120,13 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
   {
     s.flipped_faces = 0;
     for(const Triangle& t : mesh.triangles) s.flipped_faces += normal_of(mesh, t).dot(normal_of(*reference, t)) < 0.;
-    s.inverted_faces = inverted_faces(mesh, *reference, face_groups);
+    s.inverted_faces = static_cast<int>(inverted_faces(mesh, *reference, face_groups).size());
   }
   return s;
 }
 
-int inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference, const std::vector<int>* face_groups)
+std::vector<int> inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference,
+                                const std::vector<int>* face_groups)
 {
   if(reference.triangles != mesh.triangles)
     throw Input_error("inverted_faces", "reference", "does not have the mesh's triangles");
@@ -134,25 +151,33 @@ int inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference, cons
     }
     rotation[g] = Eigen::umeyama(from, to, false).topLeftCorner<3, 3>();
   }
-  int inverted = 0;
+  std::vector<int> inverted;
   for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    inverted += normal_of(mesh, mesh.triangles[f]).dot(rotation[group[f]] * normal_of(reference, mesh.triangles[f])) < 0.;
+    if(normal_of(mesh, mesh.triangles[f]).dot(rotation[group[f]] * normal_of(reference, mesh.triangles[f])) < 0.)
+      inverted.push_back(int(f));
   return inverted;
+}
+
+std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surface)
+{
+  const Mesh target = surface_mesh_of(surface);
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  const CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree(faces(target).first, faces(target).second, target);
+  std::vector<int> folded;
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const Eigen::RowVector3d c = (mesh.points.row(t[0]) + mesh.points.row(t[1]) + mesh.points.row(t[2])) / 3.;
+    const Mesh::Face_index nearest = tree.closest_point_and_primitive(Point_3(c[0], c[1], c[2])).second;
+    const Kernel::Vector_3 n = PMP::compute_face_normal(nearest, target);
+    if(normal_of(mesh, t).dot(Eigen::Vector3d(n.x(), n.y(), n.z())) < 0.) folded.push_back(int(f));
+  }
+  return folded;
 }
 
 double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
 {
-  // Only the surfaces are compared: a soup that is no polygon mesh (a face
-  // turned the other way, a non-manifold edge) is oriented and split first.
-  const auto to_mesh = [](const Indexed_mesh& m) {
-    std::vector<Point_3> points = points_of(m);
-    std::vector<std::vector<std::size_t>> faces = faces_of(m);
-    if(!PMP::is_polygon_soup_a_polygon_mesh(faces)) PMP::orient_polygon_soup(points, faces);
-    Mesh sm;
-    PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
-    return sm;
-  };
-  const Mesh ma = to_mesh(a), mb = to_mesh(b);
+  const Mesh ma = surface_mesh_of(a), mb = surface_mesh_of(b);
   const double diagonal = (b.points.colwise().maxCoeff() - b.points.colwise().minCoeff()).norm();
   const double d = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
     ma, mb, CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)),

@@ -56,7 +56,7 @@ int inverted(const Point_matrix& after, const Point_matrix& before)
   a.triangles = b.triangles = mpm_test::tube_triangles(rings, sides);
   a.points = after;
   b.points = before;
-  return inverted_faces(a, b);
+  return static_cast<int>(inverted_faces(a, b).size());
 }
 
 } // namespace

@@ -52,11 +52,11 @@ TEST(Surface_soundness, a_part_turned_as_a_whole_flips_faces_but_inverts_none)
   EXPECT_GT(s.flipped_faces, 100);
   EXPECT_EQ(s.inverted_faces, 0);
   // Without the groups the two tubes are one piece, which no rotation turns back.
-  EXPECT_GT(inverted_faces(turned, rest), 100);
+  EXPECT_GT(inverted_faces(turned, rest).size(), 100u);
 
   Indexed_mesh mirrored = rest;
   for(int v = 120; v < 240; ++v) mirrored.points(v, 0) = 6. - rest.points(v, 0);
-  EXPECT_GT(inverted_faces(mirrored, rest, &groups), 108); // most of the mirrored tube's 216
+  EXPECT_GT(inverted_faces(mirrored, rest, &groups).size(), 108u); // most of the mirrored tube's 216
 
   groups.pop_back();
   EXPECT_THROW(inverted_faces(turned, rest, &groups), Input_error);

@@ -5,6 +5,8 @@
 
 #include <CGAL/MPM/Indexed_mesh.h>
 
+#include <vector>
+
 namespace CGAL {
 namespace MPM {
 
@@ -41,13 +43,21 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
                                 const std::vector<int>* face_groups = nullptr);
 
 /// \ingroup PkgMPMRef
-/// Faces of `mesh` turned inside out against `reference` (the same
+/// The faces of `mesh` turned inside out against `reference` (the same
 /// triangles at other positions) within their group in `face_groups` (one
 /// group id per face; without it the mesh is one group): the face's normal
 /// points against the reference's once the group's best rotation (Kabsch)
 /// is taken out. See `Surface_soundness::inverted_faces`.
-int inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference,
-                   const std::vector<int>* face_groups = nullptr);
+std::vector<int> inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference,
+                                const std::vector<int>* face_groups = nullptr);
+
+/// \ingroup PkgMPMRef
+/// Faces of `mesh` that lie turned over on `surface`, which they
+/// approximate (for example a learned example against its input): the
+/// face's normal points against the normal of the face of `surface`
+/// nearest to its centroid (CGAL's `AABB_tree`). These are folds of the
+/// correspondence; an edit that unfolds them inverts them against the rest.
+std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surface);
 
 /// \ingroup PkgMPMRef
 /// Symmetric Hausdorff distance between two surfaces, approximated by

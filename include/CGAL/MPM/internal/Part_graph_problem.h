@@ -121,7 +121,8 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
 // seam (generalized docking) both keep their rest placement. Expressed in
 // the pair space's frame through `pair_motion` and the pair's rest points.
 Point_matrix pair_target(const Docking_rule& rule, const std::vector<Seam_vertex>& merged, const Point_matrix& first, Point_matrix second,
-                         const Point_matrix& second_rest, const Rigid_motion& pair_motion, const Point_matrix& rest);
+                         const Point_matrix& first_rest, const Point_matrix& second_rest, const Rigid_motion& pair_motion,
+                         const Point_matrix& rest);
 
 // True when the seam points `p` (k x 3) are too close to a line to fix a
 // rotation about it.
