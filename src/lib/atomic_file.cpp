@@ -4,8 +4,14 @@
 #include <CGAL/MPM/Input_error.h>
 
 #include <atomic>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <mutex>
+#include <vector>
+
+#include <unistd.h>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -22,23 +28,66 @@ namespace {
 
 // A name no other writer (thread or process) picks at the same time: the
 // random part separates processes, the counter separates threads of one.
+// The target's name is shortened so that the whole name fits the file
+// system's limit (a valid 250-character output name must stay writable).
 fs::path unique_temporary_path(const fs::path& target)
 {
   static std::atomic<unsigned long> counter{0};
   static const unsigned long long process_salt = std::random_device{}();
-  std::ostringstream name;
-  name << '.' << target.filename().string() << ".tmp." << std::hex << process_salt << '.'
-       << counter++;
-  return target.parent_path() / name.str();
+  std::ostringstream suffix;
+  suffix << ".tmp." << std::hex << process_salt << '.' << counter++;
+  const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const long limit = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  const std::size_t room = std::size_t(limit > 0 ? limit : 255) - 1 - suffix.str().size();
+  const std::string name = target.filename().string();
+  return target.parent_path() / ("." + name.substr(0, std::min(name.size(), room)) + suffix.str());
+}
+
+// Temporary files being written, for the signal handler: fixed slots, so
+// that the handler reads them without allocating or locking.
+constexpr int temporary_slots = 32;
+constexpr std::size_t temporary_path_size = 4096;
+char temporary_paths[temporary_slots][temporary_path_size];
+std::atomic<bool> temporary_used[temporary_slots];
+std::mutex temporary_slot_mutex;
+
+int register_temporary(const fs::path& path)
+{
+  const std::string text = path.string();
+  if(text.size() >= temporary_path_size) return -1;
+  std::lock_guard<std::mutex> lock(temporary_slot_mutex);
+  for(int k = 0; k < temporary_slots; ++k)
+    if(!temporary_used[k].load())
+    {
+      std::memcpy(temporary_paths[k], text.c_str(), text.size() + 1);
+      temporary_used[k].store(true);
+      return k;
+    }
+  return -1;
+}
+
+void unregister_temporary(int slot)
+{
+  if(slot >= 0) temporary_used[slot].store(false);
+}
+
+extern "C" void remove_temporaries_and_reraise(int signal_number)
+{
+  for(int k = 0; k < temporary_slots; ++k)
+    if(temporary_used[k].load()) ::unlink(temporary_paths[k]);
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
 }
 
 // Removes the temporary file on every exit path except a successful rename.
 struct Temporary_file_guard
 {
   fs::path path;
+  int slot = register_temporary(path);
   bool armed = true;
   ~Temporary_file_guard()
   {
+    unregister_temporary(slot);
     if(armed) {
       std::error_code ignored;
       fs::remove(path, ignored);
@@ -46,15 +95,70 @@ struct Temporary_file_guard
   }
 };
 
+// Files the command read, when the caller asked to protect them.
+std::atomic<bool> guarding_inputs{false};
+std::mutex input_mutex;
+std::vector<fs::path> inputs;
+
+void note_input(const std::string& path)
+{
+  if(!guarding_inputs.load()) return;
+  std::lock_guard<std::mutex> lock(input_mutex);
+  inputs.emplace_back(path);
+}
+
+void refuse_overwriting_an_input(const std::string& path, const fs::path& target)
+{
+  if(!guarding_inputs.load()) return;
+  std::lock_guard<std::mutex> lock(input_mutex);
+  for(const fs::path& input : inputs)
+  {
+    std::error_code ec;
+    if(fs::equivalent(input, target, ec))
+      throw Input_error(path, "", "is an input of this command (\"" + input.string() +
+                                    "\"): it is not overwritten; write to another file");
+  }
+}
+
+// The file a write to `path` lands in: symbolic links followed (a dangling
+// link's target is created), so that the link stays a link.
+fs::path resolved_target(const fs::path& path)
+{
+  fs::path target = path;
+  std::error_code ec;
+  for(int depth = 0; depth < 40 && fs::is_symlink(fs::symlink_status(target, ec)); ++depth)
+  {
+    const fs::path link = fs::read_symlink(target, ec);
+    if(ec) break;
+    target = link.is_absolute() ? link : target.parent_path() / link;
+  }
+  return target;
+}
+
+// Devices, FIFOs and sockets are written as they are: replacing one by a
+// regular file would, as root, replace /dev/null.
+void write_directly(const std::string& path, const fs::path& target, const std::function<void(std::ostream&)>& write,
+                    bool binary)
+{
+  std::ofstream out(target, binary ? std::ios::out | std::ios::binary : std::ios::out);
+  if(!out) throw Input_error(path, "", "cannot write: cannot open it for writing");
+  write(out);
+  out.flush();
+  if(!out) throw Input_error(path, "", "cannot write: output error");
+}
+
 } // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary)
 {
-  const fs::path target(path);
+  const fs::path target = resolved_target(path);
   std::error_code ec;
   if(fs::is_directory(target, ec))
     throw Input_error(path, "", "cannot write: the path is a directory");
+  refuse_overwriting_an_input(path, target);
+  const fs::file_status status = fs::status(target, ec);
+  if(fs::exists(status) && !fs::is_regular_file(status)) return write_directly(path, target, write, binary);
 
   fs::path temporary;
   do { temporary = unique_temporary_path(target); } while(fs::exists(temporary, ec));
@@ -86,6 +190,18 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   guard.armed = false;
 }
 
+void guard_inputs_against_overwriting(bool guard)
+{
+  std::lock_guard<std::mutex> lock(input_mutex);
+  inputs.clear();
+  guarding_inputs.store(guard);
+}
+
+void remove_temporary_files_on_signals()
+{
+  for(int signal_number : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal_number, remove_temporaries_and_reraise);
+}
+
 void check_readable_file(const std::string& path)
 {
   std::error_code ec;
@@ -96,6 +212,7 @@ void check_readable_file(const std::string& path)
     throw Input_error(path, "", "is a directory, not a file");
   if(!std::ifstream(path, std::ios::in | std::ios::binary))
     throw Input_error(path, "", "cannot open the file for reading (permission denied?)");
+  note_input(path);
 }
 
 std::string read_file(const std::string& path)

@@ -360,6 +360,35 @@ void Table::print(std::ostream& out, const std::string& indent) const
 
 // ---- files -----------------------------------------------------------------
 
+void refuse_overwriting(const std::string& output, const std::vector<std::string>& inputs)
+{
+  for(const std::string& input : inputs)
+  {
+    std::error_code ec;
+    if(std::filesystem::equivalent(output, input, ec))
+      throw CGAL::MPM::Input_error(output, "", "would overwrite the input \"" + input +
+                                                 "\" of this command; write to another file");
+  }
+}
+
+void refuse_outputs_over_inputs(const Command& command, const Args& args)
+{
+  const auto is_output = [](const std::string& option) { return option == "output" || option == "write-annotation"; };
+  std::vector<std::string> inputs, outputs;
+  for(const Arg_item& item : args.items)
+  {
+    std::error_code ec;
+    if(is_output(item.option))
+    {
+      outputs.push_back(item.value);
+      for(const std::string& extension : command.prefix_extensions) outputs.push_back(item.value + extension);
+    }
+    else if((item.option.empty() || !item.value.empty()) && std::filesystem::is_regular_file(item.value, ec))
+      inputs.push_back(item.value);
+  }
+  for(const std::string& output : outputs) refuse_overwriting(output, inputs);
+}
+
 void ensure_parent_directory(const std::string& path)
 {
   const fs::path parent = fs::path(path).parent_path();

@@ -97,6 +97,8 @@ struct Command
   int min_positionals = 0;
   int max_positionals = 0; ///< -1: unlimited
   std::function<int(const Args&, Context&)> run; ///< returns the exit code
+  /// Extensions of the files written next to an output prefix (`-o PREFIX`).
+  std::vector<std::string> prefix_extensions;
 };
 
 /// Options every command takes (--json, --progress, --help).
@@ -161,6 +163,16 @@ private:
 };
 
 // ---- file helpers ----------------------------------------------------------
+
+/// Throws `CGAL::MPM::Input_error` naming both files when `output` is one of
+/// `inputs`, compared by identity (not by spelling).
+void refuse_overwriting(const std::string& output, const std::vector<std::string>& inputs);
+
+/// `refuse_overwriting()` for every output of the command (`-o`,
+/// `--write-annotation`; for a prefix, the prefix with each of
+/// `Command::prefix_extensions`) against the files named on its command
+/// line, before any work.
+void refuse_outputs_over_inputs(const Command& command, const Args& args);
 
 /// Creates the parent directory of `path` when it is missing; throws
 /// `CGAL::MPM::Input_error` naming the directory when that fails.

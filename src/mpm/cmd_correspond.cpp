@@ -61,6 +61,9 @@ int run_correspond(const Args& args, Context& context)
     throw Usage_error("'mpm correspond' needs --annotation JSON naming the part types (no " +
                       fs::path(mesh_path).replace_extension(".json").string() + ")");
 
+  // The annotation and labels found beside the mesh are inputs too.
+  if(!fs::is_directory(output, ec)) refuse_overwriting(output + ".json", {annotation_path, labels});
+
   std::vector<std::string> warnings;
   Training_input input;
   context.progress.update("reading " + mesh_path, 0.);
@@ -179,6 +182,7 @@ Command make_correspond_command()
     {"no-refine", 0, Value_kind::flag, "", "", "skip the refinement (trace(Sigma) minimization)"},
     {"refinement-iterations", 0, Value_kind::integer, "N", "40", "gradient steps of the refinement", 0, INT_MAX},
   };
+  c.prefix_extensions = {".json"};
   c.run = run_correspond;
   return c;
 }

@@ -135,6 +135,7 @@ Command make_cut_command()
     {"open", 0, Value_kind::flag, "", "closed loops",
      "cuts without a \"closed\" key run open, from border to border"},
   };
+  c.prefix_extensions = {".off", ".seg"};
   c.run = run_cut;
   return c;
 }

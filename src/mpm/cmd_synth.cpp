@@ -132,6 +132,7 @@ Command make_synth_command()
     {"pose-seed", 0, Value_kind::integer, "N", "none: the training pose",
      "draw a held-out pose from this seed instead", 0, UINT_MAX},
   };
+  c.prefix_extensions = {".off", ".seg", ".json"};
   c.run = run_synth;
   return c;
 }

@@ -5,6 +5,8 @@
 // the table below; each lives in its own cmd_NAME.cpp.
 #include "cli.h"
 
+#include <CGAL/MPM/internal/Atomic_file.h>
+
 #include <CGAL/MPM/Input_error.h>
 
 #include <cstdio>
@@ -117,6 +119,9 @@ int dispatch(const std::vector<std::string>& argv)
     return mpm::exit_ok;
   }
   const mpm::Args args = mpm::parse_arguments(command, rest);
+  mpm::refuse_outputs_over_inputs(command, args);
+  CGAL::MPM::internal::guard_inputs_against_overwriting(true);
+  CGAL::MPM::internal::remove_temporary_files_on_signals();
   mpm::Progress progress(command.name, args.flag("progress"));
   mpm::Context context{command.name, args.flag("json"), progress};
   return command.run(args, context);

@@ -391,4 +391,39 @@ TEST_F(Cli, ProgressIsOptInWhenStderrIsNotATerminal)
   }
 }
 
+// An output that is an input of the same command, however spelled, is
+// refused with both names, and the input keeps its bytes.
+TEST_F(Cli, OutputsThatAreInputsAreRefusedAndTheInputsKept)
+{
+  const std::string t = path("t");
+  ASSERT_EQ(run("synth hexa-grid --vertices 2000 -o " + quote(t)).status, 0);
+  ASSERT_EQ(run("learn " + quote(t + ".off") + " -o " + quote(path("m.mpm"))).status, 0);
+  const std::string mesh = slurp(t + ".off"), labels = slurp(t + ".seg"), annotation = slurp(t + ".json"),
+                    model = slurp(path("m.mpm"));
+  const std::string respelled = (dir / "." / "t.off").string();
+  const std::pair<std::string, std::string> refused[] = {
+    {"learn " + quote(t + ".off") + " -o " + quote(respelled), "t.off"},
+    {"learn " + quote(t + ".off") + " --labels " + quote(t + ".seg") + " --write-annotation " + quote(t + ".seg") +
+       " -o " + quote(path("n.mpm")),
+     "t.seg"},
+    {"graph " + quote(path("m.mpm")) + " -o " + quote(path("m.mpm")), "m.mpm"},
+    {"cut " + quote(t + ".off") + " --cuts " + quote(path("none.json")) + " -o " + quote(t), "t.off"},
+    {"correspond " + quote(t + ".off") + " -o " + quote(t), "t.json"}, // the annotation found beside the mesh
+  };
+  for(const auto& [arguments, named] : refused)
+  {
+    const Run_result r = run(arguments);
+    expect_error(r, 1, "would overwrite the input");
+    EXPECT_NE(r.err.find(named), std::string::npos) << arguments << ": " << r.err;
+  }
+  EXPECT_EQ(slurp(t + ".off"), mesh);
+  EXPECT_EQ(slurp(t + ".seg"), labels);
+  EXPECT_EQ(slurp(t + ".json"), annotation);
+  EXPECT_EQ(slurp(path("m.mpm")), model);
+  EXPECT_FALSE(fs::exists(path("n.mpm")));
+  // A device is written, not replaced.
+  EXPECT_EQ(run("learn " + quote(t + ".off") + " -o /dev/null").status, 0);
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
 } // namespace
