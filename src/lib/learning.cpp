@@ -19,6 +19,7 @@
 #include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
+#include <sstream>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -102,13 +103,33 @@ Model_parameters resolve_parameters(const Training_input& first)
 // when no type varies.
 double automatic_sigma_sub(const Morphable_part_model& model, const Training_input& first)
 {
+  // A mode whose deviation is rounding (instances identical up to it: the
+  // two halves of a cut tube gave 3.7e-15) is no variation.
+  const double diagonal = bounding_box_diagonal(first.mesh.mesh.points);
   std::vector<double> per_vertex;
   for(const Part_type& t : model.types)
-    if(t.space.number_of_modes() > 0)
+    if(t.space.number_of_modes() > 0 && t.space.sigmas[0] / std::sqrt(double(t.number_of_vertices)) > 1e-9 * diagonal)
       per_vertex.push_back(t.space.sigmas[0] / std::sqrt(double(t.number_of_vertices)));
-  if(per_vertex.empty()) return 0.002 * bounding_box_diagonal(first.mesh.mesh.points);
+  if(per_vertex.empty()) return 0.002 * diagonal;
   std::nth_element(per_vertex.begin(), per_vertex.begin() + per_vertex.size() / 2, per_vertex.end());
   return 0.5 * per_vertex[per_vertex.size() / 2];
+}
+
+// A model every edit would refuse is refused here, where the mesh can be
+// named: lengths whose squares underflow (a mesh scaled by 1e-200) or
+// overflow leave a zero or infinite stiffness.
+void check_editable(const Model_parameters& p, const Training_input& first)
+{
+  const std::string source = first.mesh.source.empty() ? "training mesh" : first.mesh.source;
+  const double diagonal = bounding_box_diagonal(first.mesh.mesh.points);
+  for(const auto& [name, value] : {std::make_pair("sigma_sub", p.sigma_sub), std::make_pair("docking_radius", p.docking_radius)})
+    if(!(value > 0.) || !std::isnormal(1. / (value * value)))
+    {
+      std::ostringstream message;
+      message << "the mesh spans " << diagonal << " (diagonal), so " << name << " would be " << value
+              << ": too small or too large to edit with; scale the mesh";
+      throw Input_error(source, "bounding box", message.str());
+    }
 }
 
 // Local numbering by first appearance in the part's faces (the known
@@ -644,6 +665,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
   }
 
   if(model.parameters.sigma_sub < 0) model.parameters.sigma_sub = automatic_sigma_sub(model, inputs.front());
+  check_editable(model.parameters, inputs.front());
 
   std::vector<int> instance_in_rule(observations.size(), -1);
   for(std::size_t r = 0; r < model.rules.size(); ++r)

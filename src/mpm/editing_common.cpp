@@ -76,6 +76,29 @@ double relative_rms_displacement(const CGAL::MPM::Point_matrix& before, const CG
   return diagonal > 0 ? rms / diagonal : rms;
 }
 
+// An edit that moves vertices by more than 100 bounding-box diagonals is no
+// shape anyone asked for (a handle target of 1e150 wrote displacements of
+// 1e148): refused before writing, naming the handle that asked for it.
+void check_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::Point_matrix& after,
+                        const CGAL::MPM::Handle_set& handles, const std::string& handles_file,
+                        const std::string& model_path)
+{
+  const double diagonal = (before.colwise().maxCoeff() - before.colwise().minCoeff()).norm();
+  const double moved = (after - before).rowwise().norm().maxCoeff() / diagonal;
+  if(!(diagonal > 0.) || moved <= 100.) return;
+  if(handles.size() == 0)
+    throw CGAL::MPM::Computation_error("the edit of " + model_path + " moves vertices by up to " + format_number(moved) +
+                                       " bounding-box diagonals (more than 100); nothing written");
+  Eigen::Index farthest = 0;
+  const double asked = (handles.targets - CGAL::MPM::Point_matrix(before(handles.vertices, Eigen::all)))
+                         .rowwise().norm().maxCoeff(&farthest) / diagonal;
+  throw CGAL::MPM::Input_error(handles_file, "handle " + std::to_string(farthest) + " (vertex " +
+                                               std::to_string(handles.vertices[farthest]) + ")",
+                               "its target is " + format_number(asked) +
+                                 " bounding-box diagonals away, and the edit moves vertices by up to " +
+                                 format_number(moved) + " (more than 100); nothing written");
+}
+
 std::string setting_text(const Json& value)
 {
   return value.is_number() ? format_number(value.get<double>(), 6) : value.dump();
@@ -159,6 +182,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
     throw Computation_error("the solver produced non-finite positions or energy for example " +
                             std::to_string(example) + " of " + model_path +
                             " (try a smaller --handle-weight or handle offsets)");
+  check_displacement(input.mesh.points, result, handles, handles_file, model_path);
 
   context.progress.update("writing " + output, 0.9);
   ensure_parent_directory(output);

@@ -304,6 +304,10 @@ TEST_F(Cli_editing, InputErrorsExitWithStatusOne)
   expect_error(run("caricature " + quote(model()) + " --factor 2 --example 3 -o " + quote(path("x.off"))), 1,
                {model(), "example 3"});
   expect_error(run("symmetrize " + quote(path("nope.mpm")) + " -o " + quote(path("x.off"))), 1, {"nope.mpm"});
+  // A target 1e150 away gave displacements of 1e148 with exit 0.
+  const std::string far = handles("far.json", {{0, {1e150, 0., 0.}}, {5, {0., 0., 0.}}});
+  expect_error(run("deform " + quote(model()) + " --handles " + quote(far) + " -o " + quote(path("x.off"))), 1,
+               {"far.json", "handle 0 (vertex 0)", "bounding-box diagonals", "nothing written"});
   EXPECT_FALSE(fs::exists(path("x.off")));
 }
 

@@ -280,3 +280,24 @@ TEST(Learning, rejects_non_finite_coordinates_and_label_count)
   const std::string f = error_of([&] { learn_morphable_part_model(short_labels, tiles_annotation(2, 0.3)); });
   EXPECT_NE(f.find("strip"), std::string::npos) << f;
 }
+
+// Identical instances vary by rounding only: that is no variation to set
+// the automatic sigma_sub from (it was 3.7e-15, and every edit blew up).
+TEST(Learning, identical_instances_give_a_usable_sigma_sub)
+{
+  const Labeled_mesh strip = tile_strip({0.3, 0.3}, 4, 0.);
+  const Morphable_part_model model = learn_morphable_part_model(strip, tiles_annotation(2, 0.3));
+  const double diagonal = (strip.mesh.points.colwise().maxCoeff() - strip.mesh.points.colwise().minCoeff()).norm();
+  EXPECT_NEAR(model.parameters.sigma_sub, 0.002 * diagonal, 1e-12 * diagonal);
+}
+
+// A mesh so small that squared lengths underflow is refused at learn time,
+// naming it, instead of giving a model every edit refuses.
+TEST(Learning, rejects_a_mesh_too_small_to_edit)
+{
+  Labeled_mesh strip = tile_strip({0.3, -0.2}, 4, 0.);
+  strip.mesh.points *= 1e-200;
+  const std::string e = error_of([&] { learn_morphable_part_model(strip, tiles_annotation(2, -1.)); });
+  EXPECT_NE(e.find("strip"), std::string::npos) << e;
+  EXPECT_NE(e.find("scale the mesh"), std::string::npos) << e;
+}
