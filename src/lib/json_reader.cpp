@@ -7,6 +7,8 @@
 #include <cctype>
 #include <cstdint>
 #include <limits>
+#include <set>
+#include <vector>
 
 namespace CGAL {
 namespace MPM {
@@ -30,14 +32,47 @@ std::string one_line(std::string s)
 Json_reader::json Json_reader::parse_document(const std::string& text, const char* format, int version,
                                               const char* name) const
 {
+  // nlohmann keeps the last of two equal keys silently: a duplicate is
+  // refused, named by its path (`parts[1].label`).
+  struct Open_container
+  {
+    bool array = false;
+    int index = -1;          // arrays: the element being read
+    std::string key;         // objects: the key being read
+    std::set<std::string> keys;
+  };
+  std::vector<Open_container> open;
+  std::string duplicate;
+  const auto path_to = [&open](const std::string& key) {
+    std::string path;
+    for(const Open_container& c : open)
+      if(&c != &open.back()) path += c.array ? "[" + std::to_string(c.index) + "]" : (path.empty() ? "" : ".") + c.key;
+    return path + (path.empty() ? "" : ".") + key;
+  };
+  const json::parser_callback_t check_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+    using Event = json::parse_event_t;
+    const bool element_starts = event == Event::object_start || event == Event::array_start || event == Event::value;
+    if(element_starts && !open.empty() && open.back().array) ++open.back().index;
+    if(event == Event::object_start || event == Event::array_start)
+      open.push_back({event == Event::array_start, -1, "", {}});
+    else if((event == Event::object_end || event == Event::array_end) && !open.empty())
+      open.pop_back();
+    else if(event == Event::key && !open.empty())
+    {
+      open.back().key = parsed.get<std::string>();
+      if(!open.back().keys.insert(open.back().key).second && duplicate.empty()) duplicate = path_to(open.back().key);
+    }
+    return true;
+  };
   json root;
   try {
-    root = json::parse(text);
+    root = json::parse(text, check_duplicates);
   } catch(const json::parse_error& e) {
     fail("", "malformed JSON at byte " + std::to_string(e.byte) + ": " + one_line(e.what()));
   } catch(const json::exception& e) { // numbers beyond the double range
     fail("", "malformed JSON: " + one_line(e.what()));
   }
+  if(!duplicate.empty()) fail(duplicate, "the key is given twice (a JSON object names each key once)");
   if(!root.is_object())
     fail("", (name ? std::string("the ") + name : std::string("a ") + format + " file") +
                " must be a JSON object, not " + root.type_name());

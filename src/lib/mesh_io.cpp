@@ -795,7 +795,11 @@ void diagnose_obj(const std::string& path, const std::string& text)
       if(!parse_integer(v, id))
         throw Input_error(path, face_name(int(f)), "line " + std::to_string(face_lines[f].first) + ": " +
                                                      printable(t.text) + " is not a vertex index");
-      if(id == 0 || id > vertices || id < -vertices)
+      if(id == 0)
+        throw Input_error(path, face_name(int(f)), "line " + std::to_string(face_lines[f].first) +
+                                                     ": vertex index 0 is not valid (OBJ indices start at 1; "
+                                                     "negative ones count back from the last vertex)");
+      if(id > vertices || id < -vertices)
         throw Input_error(path, face_name(int(f)), "vertex index " + std::to_string(id) +
                                                      " is out of range (the file has " +
                                                      std::to_string(vertices) + " vertices)");
@@ -1038,6 +1042,10 @@ Mesh_file read_mesh_file(const std::string& path)
     check_off_lines(path);
   if(ext == ".ply")
     check_ply_header(path, size);
+  // CGAL reads the OBJ index 0 (invalid: indices start at 1) as another
+  // vertex, and the error then names the wrong one.
+  if(ext == ".obj")
+    diagnose_obj(path, internal::read_file(path));
 
   std::vector<Point_3> points;
   std::vector<Bounded_polygon> polygons;
@@ -1053,7 +1061,6 @@ Mesh_file read_mesh_file(const std::string& path)
   }
   if(!ok) {
     if(ext == ".off") diagnose_off(path, internal::read_file(path));
-    if(ext == ".obj") diagnose_obj(path, internal::read_file(path));
     throw Input_error(path, "", "cannot be read as " + ext.substr(1) + " (malformed or truncated file)");
   }
   if(polygons.empty() && ext == ".stl") // CGAL reads a cut or foreign STL file as one without facets

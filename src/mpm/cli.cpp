@@ -389,6 +389,19 @@ void refuse_outputs_over_inputs(const Command& command, const Args& args)
   for(const std::string& output : outputs) refuse_overwriting(output, inputs);
 }
 
+void check_output_prefix(const Command& command, const Args& args)
+{
+  if(command.prefix_extensions.empty() || !args.has("output")) return;
+  const std::string prefix = args.text("output");
+  for(const Option_spec& spec : command.options)
+    if(spec.name == "output" && spec.value_name.find("DIR") != std::string::npos) return;
+  std::error_code ec;
+  if(prefix.empty() || prefix.back() == '/' || std::filesystem::is_directory(prefix, ec) ||
+     std::filesystem::path(prefix).filename().string().front() == '.')
+    throw Usage_error("option --output: '" + prefix + "' is a directory, not a prefix: give a file name without " +
+                      "extension, such as '" + (std::filesystem::path(prefix) / "name").string() + "'");
+}
+
 void ensure_parent_directory(const std::string& path)
 {
   const fs::path parent = fs::path(path).parent_path();

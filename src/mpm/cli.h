@@ -174,6 +174,10 @@ void refuse_overwriting(const std::string& output, const std::vector<std::string
 /// line, before any work.
 void refuse_outputs_over_inputs(const Command& command, const Args& args);
 
+/// Throws `Usage_error` when the `-o PREFIX` of a command that writes files
+/// next to a prefix names a directory (`dir/`), which would write `dir/.off`.
+void check_output_prefix(const Command& command, const Args& args);
+
 /// Creates the parent directory of `path` when it is missing; throws
 /// `CGAL::MPM::Input_error` naming the directory when that fails.
 void ensure_parent_directory(const std::string& path);

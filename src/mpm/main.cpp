@@ -119,6 +119,7 @@ int dispatch(const std::vector<std::string>& argv)
     return mpm::exit_ok;
   }
   const mpm::Args args = mpm::parse_arguments(command, rest);
+  mpm::check_output_prefix(command, args);
   mpm::refuse_outputs_over_inputs(command, args);
   CGAL::MPM::internal::guard_inputs_against_overwriting(true);
   CGAL::MPM::internal::remove_temporary_files_on_signals();

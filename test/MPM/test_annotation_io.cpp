@@ -88,6 +88,17 @@ TEST(AnnotationIo, MalformedJsonGivesTheBytePosition)
   MPM_EXPECT_INPUT_ERROR(parse_annotation("[1, 2]", "array.json"), "array.json", "must be a JSON object");
 }
 
+// nlohmann's parser keeps the last of two equal keys; the readers refuse
+// them (every JSON format goes through the same reader).
+TEST(AnnotationIo, DuplicateKeysAreRefusedByTheirPath)
+{
+  MPM_EXPECT_INPUT_ERROR(parse_annotation(R"({"parts": [], "parts": []})", "a.json"), "a.json: parts: the key is given twice");
+  MPM_EXPECT_INPUT_ERROR(parse_annotation(R"({"parts": [{"label": 0, "type": "a"}, {"label": 1, "label": 2, "type": "a"}]})", "a.json"),
+                         "a.json: parts[1].label: the key is given twice");
+  MPM_EXPECT_INPUT_ERROR(parse_annotation(with_parameters(R"({"modes": 1, "modes": 2})"), "a.json"),
+                         "a.json: parameters.modes: the key is given twice");
+}
+
 TEST(AnnotationIo, UnknownKeysAreNamed)
 {
   MPM_EXPECT_INPUT_ERROR(parse_annotation(R"({"part": []})", "a.json"), "a.json", "unknown key \"part\"",

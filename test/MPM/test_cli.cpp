@@ -421,6 +421,9 @@ TEST_F(Cli, OutputsThatAreInputsAreRefusedAndTheInputsKept)
   EXPECT_EQ(slurp(t + ".json"), annotation);
   EXPECT_EQ(slurp(path("m.mpm")), model);
   EXPECT_FALSE(fs::exists(path("n.mpm")));
+  // A prefix that is a directory would have written dir/.off.
+  const Run_result directory = run("synth hexa-grid --vertices 2000 -o " + quote(dir.string() + "/"));
+  expect_error(directory, 2, "is a directory, not a prefix");
   // A device is written, not replaced.
   EXPECT_EQ(run("learn " + quote(t + ".off") + " -o /dev/null").status, 0);
   EXPECT_TRUE(fs::is_character_file("/dev/null"));

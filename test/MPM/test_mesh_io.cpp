@@ -63,6 +63,17 @@ TEST(MeshIo, PlyCarriesFaceColours)
                          "x.ply", "2 face colours for 4 faces");
 }
 
+// CGAL reads the invalid OBJ index 0 as another vertex; the error named
+// index 4 of a file that has no index 4.
+TEST(MeshIo, ObjIndexZeroIsNamed)
+{
+  mpm_test::Scratch_directory dir;
+  write_bytes(dir.file("z.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
+  MPM_EXPECT_INPUT_ERROR(read_mesh_file(dir.file("z.obj")), "z.obj: face 0: line 4: vertex index 0 is not valid");
+  write_bytes(dir.file("ok.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n");
+  EXPECT_EQ(read_mesh_file(dir.file("ok.obj")).mesh.triangles.size(), 1u);
+}
+
 TEST(MeshIo, MissingEmptyGarbageAndUnsupportedFilesAreRejected)
 {
   mpm_test::Scratch_directory dir;
