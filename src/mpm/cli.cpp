@@ -389,6 +389,17 @@ void refuse_outputs_over_inputs(const Command& command, const Args& args)
   for(const std::string& output : outputs) refuse_overwriting(output, inputs);
 }
 
+void check_memory(const std::string& option, const std::string& value, double bytes)
+{
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if(pages <= 0 || page <= 0) return;
+  const double machine = double(pages) * double(page);
+  if(bytes <= machine) return;
+  const auto gigabytes = [](double b) { return format_number(b / (1024. * 1024. * 1024.), 3) + " GB"; };
+  throw Usage_error("option --" + option + ": " + value + " needs about " + gigabytes(bytes) +
+                    " of memory; this machine has " + gigabytes(machine));
+}
+
 void check_output_prefix(const Command& command, const Args& args)
 {
   if(command.prefix_extensions.empty() || !args.has("output")) return;

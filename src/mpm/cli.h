@@ -174,6 +174,11 @@ void refuse_overwriting(const std::string& output, const std::vector<std::string
 /// line, before any work.
 void refuse_outputs_over_inputs(const Command& command, const Args& args);
 
+/// Throws `Usage_error` with the estimate when `bytes`, what `--option
+/// value` would need, exceed the machine's physical memory: refused up front
+/// rather than allocated until the machine gives out.
+void check_memory(const std::string& option, const std::string& value, double bytes);
+
 /// Throws `Usage_error` when the `-o PREFIX` of a command that writes files
 /// next to a prefix names a directory (`dir/`), which would write `dir/.off`.
 void check_output_prefix(const Command& command, const Args& args);

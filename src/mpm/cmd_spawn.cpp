@@ -30,6 +30,10 @@ int run_spawn(const Args& args, Context& context)
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   Spawn_options options;
   options.count = static_cast<int>(args.integer("count", options.count));
+  // Every spawned assembly is kept for the ranking: measured about 315 bytes
+  // per vertex of the example per graph.
+  check_memory("count", std::to_string(options.count),
+               400. * options.count * model.examples[example].mesh.number_of_vertices());
   options.seed = static_cast<unsigned>(args.integer("seed", options.seed));
   options.edits.max_edits = static_cast<int>(args.integer("edits", options.edits.max_edits));
   options.edits.min_edits = std::min(options.edits.min_edits, options.edits.max_edits);

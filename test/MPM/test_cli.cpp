@@ -429,4 +429,15 @@ TEST_F(Cli, OutputsThatAreInputsAreRefusedAndTheInputsKept)
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
+// What would need more memory than the machine has is refused up front
+// with the estimate (synth --vertices 2e9 allocated until the machine gave out).
+TEST_F(Cli, OptionsNeedingMoreMemoryThanTheMachineHasAreRefused)
+{
+  expect_error(run("synth hand --vertices 2000000000 -o " + quote(path("huge"))), 2, "needs about");
+  EXPECT_FALSE(fs::exists(path("huge.off")));
+  ASSERT_EQ(run("synth hexa-grid --vertices 2000 -o " + quote(path("t"))).status, 0);
+  ASSERT_EQ(run("learn " + quote(path("t.off")) + " -o " + quote(path("t.mpm"))).status, 0);
+  expect_error(run("spawn " + quote(path("t.mpm")) + " --count 100000"), 2, "of memory; this machine has");
+}
+
 } // namespace
