@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -22,6 +23,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -654,12 +656,12 @@ void check_off_colour(const std::string& path, const std::string& element, int l
 // without colours, at an uninitialized position. With homogeneous
 // coordinates (4OFF) it asserts that w is not 0. Anything else is left to
 // CGAL, whose failures diagnose_off() explains.
-void check_off_lines(const std::string& path)
+std::string check_off_lines(const std::string& path)
 {
   const std::string text = internal::read_file(path);
   Text_scanner s(text);
   Off_header h;
-  if(!parse_off_header(text, h, s) || h.binary) return;
+  if(!parse_off_header(text, h, s) || h.binary) return "";
   if(h.textures && !h.colors)
     throw Input_error(path, "header", "texture coordinates without colours (STOFF) are not supported: "
                                       "CGAL's reader misreads them");
@@ -670,7 +672,7 @@ void check_off_lines(const std::string& path)
   for(std::uint64_t v = 0; v < h.vertices; ++v) {
     if(!s.next(t)) {
       if(h.colors) throw_truncated(path, v, h.vertices, "vertices");
-      return;
+      return "";
     }
     const std::vector<Off_number> numbers = cgal_off_numbers(line_from(text, t));
     s.rest_of_line();
@@ -689,14 +691,14 @@ void check_off_lines(const std::string& path)
     // colours, its colour from past the end of no numbers.
     if(!s.next(t)) {
       if(h.colors) throw_truncated(path, f, h.faces, "faces");
-      return;
+      return "";
     }
     const std::vector<Off_number> numbers = cgal_off_numbers(line_from(text, t));
     s.rest_of_line();
     const std::string element = face_name(int(std::min<std::uint64_t>(f, std::numeric_limits<int>::max())));
     const std::string where = "line " + std::to_string(t.line) + ": ";
     if(numbers.empty() && h.colors) throw Input_error(path, element, where + "no corner count");
-    if(numbers.empty()) return;
+    if(numbers.empty()) return "";
     if(!castable(numbers[0].value, 18446744073709551616.))
       throw Input_error(path, element, where + "corner count " + printable(numbers[0].text) +
                                          " is not a non-negative integer");
@@ -706,6 +708,11 @@ void check_off_lines(const std::string& path)
         throw Input_error(path, element, where + "vertex index " + printable(numbers[c].text) + " is out of range");
     if(h.colors && numbers.size() > announced) check_off_colour(path, element, t.line, numbers, announced + 1, coloured);
   }
+  // CGAL stops reading at the last announced face.
+  if(s.next(t))
+    return path + ": line " + std::to_string(t.line) + ": text after the last of the " + std::to_string(h.faces) +
+           " faces (" + printable(t.text) + ") is ignored";
+  return "";
 }
 
 // Finds why CGAL rejected an ASCII OFF file, so that the message names the
@@ -926,6 +933,23 @@ Mesh_file mesh_from_polygons(const std::string& path, const std::vector<Point_3>
     r.warnings.push_back(path + ": " + std::to_string(fanned) + " polygon" + (fanned > 1 ? "s" : "") +
                          " with more than 3 corners " + (fanned > 1 ? "were" : "was") +
                          " fan-triangulated (first: face " + std::to_string(first_fanned) + ")");
+  // Faces over the same three vertices (in any order): kept, but a mesh
+  // with them is not manifold, and the user should know.
+  std::map<std::array<int, 3>, int> file_face_of;
+  int repeated = 0, first_repeat = -1, first_original = -1;
+  for(std::size_t k = 0; k < r.mesh.triangles.size(); ++k) {
+    std::array<int, 3> key = r.mesh.triangles[k];
+    std::sort(key.begin(), key.end());
+    const auto [it, added] = file_face_of.emplace(key, r.file_face[k]);
+    if(!added && repeated++ == 0) {
+      first_repeat = r.file_face[k];
+      first_original = it->second;
+    }
+  }
+  if(repeated > 0)
+    r.warnings.push_back(path + ": " + std::to_string(repeated) + " face" + (repeated > 1 ? "s repeat" : " repeats") +
+                         " the vertices of another (first: face " + std::to_string(first_repeat) + " repeats face " +
+                         std::to_string(first_original) + "); kept");
   const std::size_t unused = std::size_t(std::count(used.begin(), used.end(), 0));
   if(unused > 0) {
     const std::size_t first = std::size_t(std::find(used.begin(), used.end(), 0) - used.begin());
@@ -1038,8 +1062,9 @@ Mesh_file read_mesh_file(const std::string& path)
                                   " (supported: .off, .obj, .ply, .stl)");
   if(ext == ".off")
     check_off_counts_fit(path, size);
+  std::string trailing_text;
   if(ext == ".off")
-    check_off_lines(path);
+    trailing_text = check_off_lines(path);
   if(ext == ".ply")
     check_ply_header(path, size);
   // CGAL reads the OBJ index 0 (invalid: indices start at 1) as another
@@ -1065,7 +1090,9 @@ Mesh_file read_mesh_file(const std::string& path)
   }
   if(polygons.empty() && ext == ".stl") // CGAL reads a cut or foreign STL file as one without facets
     throw Input_error(path, "", "contains no faces (an empty, truncated or non-STL file)");
-  return mesh_from_polygons(path, points, polygons, ext == ".obj");
+  Mesh_file file = mesh_from_polygons(path, points, polygons, ext == ".obj");
+  if(!trailing_text.empty()) file.warnings.push_back(trailing_text);
+  return file;
 }
 
 std::vector<int> read_seg_file(const std::string& path)

@@ -74,6 +74,19 @@ TEST(MeshIo, ObjIndexZeroIsNamed)
   EXPECT_EQ(read_mesh_file(dir.file("ok.obj")).mesh.triangles.size(), 1u);
 }
 
+// Both were accepted silently.
+TEST(MeshIo, RepeatedFacesAndTextAfterTheLastFaceWarn)
+{
+  mpm_test::Scratch_directory dir;
+  const std::string tetra = "OFF\n4 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  write_bytes(dir.file("d.off"), tetra + "3 2 1 0\njunk\n");
+  const Mesh_file file = read_mesh_file(dir.file("d.off"));
+  EXPECT_EQ(file.mesh.triangles.size(), 5u); // kept
+  ASSERT_EQ(file.warnings.size(), 2u);
+  EXPECT_EQ(file.warnings[0], dir.file("d.off") + ": 1 face repeats the vertices of another (first: face 4 repeats face 0); kept");
+  EXPECT_EQ(file.warnings[1], dir.file("d.off") + ": line 12: text after the last of the 5 faces (\"junk\") is ignored");
+}
+
 TEST(MeshIo, MissingEmptyGarbageAndUnsupportedFilesAreRejected)
 {
   mpm_test::Scratch_directory dir;
