@@ -54,6 +54,20 @@ std::map<Site_ref, int> observed_site_degrees(const Morphable_part_model& model)
   return degrees;
 }
 
+namespace {
+
+// The first coordinate more than 1000 standard deviations of its mode from
+// the mean (-1 if none): a node at 1e300 overflowed the embedding, and the
+// error named neither the file nor the node.
+int absurd_coordinate(const Eigen::VectorXd& coordinates, const Shape_space& space)
+{
+  for(Eigen::Index k = 0; k < coordinates.size() && k < space.sigmas.size(); ++k)
+    if(std::abs(coordinates[k]) > 1000. * space.sigmas[k]) return int(k);
+  return -1;
+}
+
+} // namespace
+
 void validate_part_graph(const Morphable_part_model& model, const Part_graph& graph, const std::string& source)
 {
   const auto fail = [&](const std::string& element, const std::string& problem) {
@@ -75,6 +89,11 @@ void validate_part_graph(const Morphable_part_model& model, const Part_graph& gr
              std::to_string(modes) + " modes");
     if(!node.coordinates.allFinite())
       fail(element + " (" + model.types[node.type].name + ")", "has non-finite shape coordinates");
+    const int absurd = absurd_coordinate(node.coordinates, model.types[node.type].space);
+    if(absurd >= 0)
+      fail(element + " (" + model.types[node.type].name + ")",
+           "shape coordinate " + std::to_string(absurd) +
+             " is more than 1000 standard deviations of its mode from the mean: no shape of its type");
   }
   const std::map<Site_ref, int> capacity = observed_site_degrees(model);
   std::map<std::pair<int, int>, std::vector<int>> edges_at_site; // (node, site) -> edges
@@ -102,6 +121,9 @@ void validate_part_graph(const Morphable_part_model& model, const Part_graph& gr
        (e.coordinates.size() != rule.space.number_of_modes() || !e.coordinates.allFinite()))
       fail(element, "needs " + std::to_string(rule.space.number_of_modes()) +
                       " finite pair coordinates (or none: the pair's mean)");
+    if(absurd_coordinate(e.coordinates, rule.space) >= 0)
+      fail(element, "pair coordinate " + std::to_string(absurd_coordinate(e.coordinates, rule.space)) +
+                      " is more than 1000 standard deviations of its mode: no pair geometry of its rule");
     for(const auto& [node, site] : {std::make_pair(e.first, rule.first), std::make_pair(e.second, rule.second)})
     {
       std::vector<int>& at = edges_at_site[{node, site.site}];

@@ -76,27 +76,39 @@ double relative_rms_displacement(const CGAL::MPM::Point_matrix& before, const CG
   return diagonal > 0 ? rms / diagonal : rms;
 }
 
-// An edit that moves vertices by more than 100 bounding-box diagonals is no
-// shape anyone asked for (a handle target of 1e150 wrote displacements of
-// 1e148): refused before writing, naming the handle that asked for it.
+// Displacements beyond this many bounding-box diagonals are no shape anyone
+// asked for: a handle target of 1e150 wrote displacements of 1e148, one of
+// 1e308 overflowed the solve, and neither error named the handle.
+constexpr double farthest_sensible_move = 100.;
+
+double diagonal_of(const CGAL::MPM::Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
+
+// Refused before the solve, naming the handle.
+void check_handle_targets(const CGAL::MPM::Point_matrix& rest, const CGAL::MPM::Handle_set& handles,
+                          const std::string& handles_file)
+{
+  const double diagonal = diagonal_of(rest);
+  for(int k = 0; k < handles.size(); ++k)
+  {
+    const double asked = (handles.targets.row(k) - rest.row(handles.vertices[k])).stableNorm() / diagonal;
+    if(diagonal > 0. && !(asked <= farthest_sensible_move))
+      throw CGAL::MPM::Input_error(handles_file, "handle " + std::to_string(k) + " (vertex " +
+                                                   std::to_string(handles.vertices[k]) + ")",
+                                   "its target is " + format_number(asked) + " bounding-box diagonals away (more than " +
+                                     format_number(farthest_sensible_move) + "); nothing written");
+  }
+}
+
+// Refused before writing, whatever moved the vertices so far.
 void check_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::Point_matrix& after,
-                        const CGAL::MPM::Handle_set& handles, const std::string& handles_file,
                         const std::string& model_path)
 {
-  const double diagonal = (before.colwise().maxCoeff() - before.colwise().minCoeff()).norm();
+  const double diagonal = diagonal_of(before);
   const double moved = (after - before).rowwise().norm().maxCoeff() / diagonal;
-  if(!(diagonal > 0.) || moved <= 100.) return;
-  if(handles.size() == 0)
+  if(diagonal > 0. && moved > farthest_sensible_move)
     throw CGAL::MPM::Computation_error("the edit of " + model_path + " moves vertices by up to " + format_number(moved) +
-                                       " bounding-box diagonals (more than 100); nothing written");
-  Eigen::Index farthest = 0;
-  const double asked = (handles.targets - CGAL::MPM::Point_matrix(before(handles.vertices, Eigen::all)))
-                         .rowwise().norm().maxCoeff(&farthest) / diagonal;
-  throw CGAL::MPM::Input_error(handles_file, "handle " + std::to_string(farthest) + " (vertex " +
-                                               std::to_string(handles.vertices[farthest]) + ")",
-                               "its target is " + format_number(asked) +
-                                 " bounding-box diagonals away, and the edit moves vertices by up to " +
-                                 format_number(moved) + " (more than 100); nothing written");
+                                       " bounding-box diagonals (more than " + format_number(farthest_sensible_move) +
+                                       "); nothing written");
 }
 
 std::string setting_text(const Json& value)
@@ -158,6 +170,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   const Training_example& input = model.examples[example];
   const std::string handles_file = args.text("handles");
   const Handle_set handles = handles_file.empty() ? Handle_set() : read_handles(handles_file, input.mesh.points);
+  check_handle_targets(input.mesh.points, handles, handles_file);
 
   Embedding_options options;
   options.max_iterations = static_cast<int>(args.integer("iterations", options.max_iterations));
@@ -182,7 +195,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
     throw Computation_error("the solver produced non-finite positions or energy for example " +
                             std::to_string(example) + " of " + model_path +
                             " (try a smaller --handle-weight or handle offsets)");
-  check_displacement(input.mesh.points, result, handles, handles_file, model_path);
+  check_displacement(input.mesh.points, result, model_path);
 
   context.progress.update("writing " + output, 0.9);
   ensure_parent_directory(output);

@@ -307,7 +307,11 @@ TEST_F(Cli_editing, InputErrorsExitWithStatusOne)
   // A target 1e150 away gave displacements of 1e148 with exit 0.
   const std::string far = handles("far.json", {{0, {1e150, 0., 0.}}, {5, {0., 0., 0.}}});
   expect_error(run("deform " + quote(model()) + " --handles " + quote(far) + " -o " + quote(path("x.off"))), 1,
-               {"far.json", "handle 0 (vertex 0)", "bounding-box diagonals", "nothing written"});
+               {"far.json", "handle 0 (vertex 0)", "bounding-box diagonals away", "nothing written"});
+  // One of 1e308 overflowed the solve, and the error named no handle.
+  const std::string overflow = handles("overflow.json", {{5, {0., 0., 0.}}, {0, {1e308, 0., 0.}}});
+  expect_error(run("deform " + quote(model()) + " --handles " + quote(overflow) + " -o " + quote(path("x.off"))), 1,
+               {"overflow.json", "handle 0 (vertex 0)", "bounding-box diagonals away"});
   EXPECT_FALSE(fs::exists(path("x.off")));
 }
 

@@ -144,6 +144,12 @@ TEST(Part_graph_validation, rejects_coordinates_of_the_wrong_length_or_not_finit
     EXPECT_NE(std::string(e.what()).find("node 1"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos);
   }
+  // 1e300 overflowed the embedding, and the error named neither file nor node.
+  j = training_json();
+  j["nodes"][1]["coordinates"][0] = 1e300;
+  EXPECT_NE(parse_error(j).find("node 1 (proximal): shape coordinate 0 is more than 1000 standard deviations"),
+            std::string::npos)
+    << parse_error(j);
 }
 
 TEST(Part_graph_validation, rejects_a_node_index_out_of_range)
