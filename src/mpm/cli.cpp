@@ -287,6 +287,8 @@ void Progress::update(const std::string& stage, double fraction)
 
 void Progress::done()
 {
+  // The last stage is finished: say so, rather than stopping at its last step.
+  if(enabled_ && !stage_.empty() && percent_ < 100) update(stage_, 1.);
   if(line_open_)
   {
     std::fputs("\r\033[K", stderr);

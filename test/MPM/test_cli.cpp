@@ -389,6 +389,11 @@ TEST_F(Cli, ProgressIsOptInWhenStderrIsNotATerminal)
     EXPECT_EQ(l.find('\r'), std::string::npos) << l; // plain lines, no carriage returns
     EXPECT_TRUE(l.rfind("mpm learn: ", 0) == 0 || l.rfind("mpm: warning: ", 0) == 0) << l;
   }
+  // Progress ends at 100% (it stopped at the last step of the last stage).
+  std::string last_progress;
+  for(const std::string& l : lines)
+    if(l.rfind("mpm learn: ", 0) == 0) last_progress = l;
+  EXPECT_EQ(last_progress.substr(last_progress.size() - 5), " 100%") << last_progress;
 }
 
 // An output that is an input of the same command, however spelled, is
