@@ -1030,7 +1030,10 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       Dense_correspondence_options co = options.correspondence;
       if(options.warning && !co.warning) co.warning = options.warning;
       if(options.progress && !co.progress)
-        co.progress = [&](const std::string& stage, double) { options.progress(stage, double(type_index - 1) / segments_of_type.size()); };
+        co.progress = [&](const std::string& stage, double within) {
+          // One scale for all types: the type's share, advanced within it.
+          options.progress(stage, (double(type_index - 1) + std::clamp(within, 0., 1.)) / segments_of_type.size());
+        };
       Dense_correspondence c = compute_dense_correspondence(segments, name, co);
       // A segment the template cannot cover keeps its own shape, as a type of
       // its own; the others are put in correspondence again without it.

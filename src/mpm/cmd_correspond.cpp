@@ -90,6 +90,8 @@ int run_correspond(const Args& args, Context& context)
   const std::string summary_path = directory ? (fs::path(output) / "correspondence.json").string() : output + ".json";
 
   Json types = Json::array();
+  std::size_t files = 0, written = 0;
+  for(const auto& entry : result.types) files += entry.second.segments.size();
   for(const auto& [name, c] : result.types)
   {
     const std::vector<std::pair<int, int>>& refs = result.segments.at(name);
@@ -101,7 +103,7 @@ int run_correspond(const Args& args, Context& context)
       mesh.points = s.positions;
       mesh.triangles = c.triangles;
       const std::string file = path_of(file_safe(name) + "_" + std::to_string(i), ".off");
-      context.progress.update("writing " + file, double(i) / c.segments.size());
+      context.progress.update("writing " + file, double(written++) / files);
       ensure_parent_directory(file);
       write_mesh_file(mesh, file);
       segments.push_back({{"label", refs[i].second},

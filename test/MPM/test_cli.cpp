@@ -447,4 +447,30 @@ TEST_F(Cli, OptionsNeedingMoreMemoryThanTheMachineHasAreRefused)
     expect_error(run("spawn " + quote(path("t.mpm")) + " --count 100000"), 2, "of memory; this machine has");
 }
 
+// Progress runs once from 0 to 100% through correspondence and through
+// writing: it restarted at 0% for every part type.
+TEST_F(Cli, CorrespondProgressAdvancesAcrossPartTypes)
+{
+  const std::string t = path("hand");
+  ASSERT_EQ(run("synth hand --vertices 2000 -o " + quote(t)).status, 0);
+  const Run_result r = run("correspond " + quote(t + ".off") + " --progress -o " + quote(path("c")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::map<std::string, std::vector<int>> percents; // "correspondence" (and refinement), "writing"
+  for(const std::string& l : r.err_lines())
+  {
+    const std::string stage = l.rfind("mpm correspond: writing ", 0) == 0 ? "writing"
+                            : l.rfind("mpm correspond: correspondence of ", 0) == 0 ||
+                                  l.rfind("mpm correspond: refinement of ", 0) == 0
+                              ? "correspondence"
+                              : "";
+    if(!stage.empty()) percents[stage].push_back(std::stoi(l.substr(l.rfind(' ') + 1)));
+  }
+  for(const auto& [stage, values] : percents)
+  {
+    ASSERT_GE(values.size(), 3u) << stage;
+    EXPECT_TRUE(std::is_sorted(values.begin(), values.end())) << stage << ": " << r.err;
+  }
+  EXPECT_EQ(percents["writing"].back(), 100) << r.err;
+}
+
 } // namespace
