@@ -1319,6 +1319,7 @@ Solve_report Embedding_solver::solve_from_current_state()
     best = std::min(best, e);
     report.energies.push_back(e);
     ++report.iterations;
+    if(d.options.iteration_callback) d.options.iteration_callback(report.iterations, e);
     if(previous - e <= d.options.tolerance * std::max(previous, std::numeric_limits<double>::min()))
     {
       report.converged = true;

@@ -299,6 +299,14 @@ void Progress::done()
   percent_ = -1;
 }
 
+std::function<void(int, double)> iteration_progress(Progress& progress, const std::string& stage, double from,
+                                                    double to, int max_iterations)
+{
+  return [&progress, stage, from, to, max_iterations](int iteration, double) {
+    progress.update(stage, from + (to - from) * std::min(1., double(iteration) / std::max(1, max_iterations)));
+  };
+}
+
 void Progress::warning(const std::string& message)
 {
   if(line_open_) std::fputs("\r\033[K", stderr);

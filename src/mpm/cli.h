@@ -139,6 +139,12 @@ private:
   int percent_ = -1;
 };
 
+/// A solver's `Embedding_options::iteration_callback` that advances
+/// `progress` in `stage` from `from` to `to` as the iterations approach
+/// `max_iterations` (a solve of many parts sat at one percentage).
+std::function<void(int, double)> iteration_progress(Progress& progress, const std::string& stage, double from,
+                                                    double to, int max_iterations);
+
 // ---- output helpers --------------------------------------------------------
 
 /// Prints one JSON object on stdout (indented, one trailing newline).

@@ -150,6 +150,9 @@ int run_assemble(const Args& args, Context& context)
   options.solver.max_iterations = static_cast<int>(args.integer("iterations", options.solver.max_iterations));
   options.solver.tolerance = args.real("tolerance", options.solver.tolerance);
   context.progress.update("assembling " + std::to_string(graph.nodes.size()) + " parts", 0.2);
+  options.solver.iteration_callback =
+    iteration_progress(context.progress, "embedding " + std::to_string(graph.nodes.size()) + " parts", 0.3, 0.9,
+                       options.solver.max_iterations);
   const Assembly assembly = assemble(model, graph, options);
   context.progress.update("writing " + output, 0.9);
   write_assembly_mesh(assembly, output);

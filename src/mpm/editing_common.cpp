@@ -177,6 +177,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   options.tolerance = args.real("tolerance", options.tolerance);
   options.handle_weight = args.real("handle-weight", options.handle_weight);
   options.coupling_weight = args.real("coupling", options.coupling_weight);
+  options.iteration_callback = iteration_progress(context.progress, "solving", 0.3, 0.9, options.max_iterations);
 
   context.progress.update("setting up", 0.1);
   const Clock::time_point setup_start = Clock::now();

@@ -473,4 +473,27 @@ TEST_F(Cli, CorrespondProgressAdvancesAcrossPartTypes)
   EXPECT_EQ(percents["writing"].back(), 100) << r.err;
 }
 
+// The solve advances the progress of assemble (it sat at "assembling 20%"
+// for the whole solve of a large graph).
+TEST_F(Cli, AssembleProgressAdvancesThroughTheSolve)
+{
+  const std::string t = path("grid");
+  ASSERT_EQ(run("synth hexa-grid --vertices 2000 -o " + quote(t)).status, 0);
+  ASSERT_EQ(run("learn " + quote(t + ".off") + " -o " + quote(path("g.mpm"))).status, 0);
+  const Run_result r = run("assemble " + quote(path("g.mpm")) + " --progress -o " + quote(path("a.off")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<int> percents;
+  bool embedding = false;
+  for(const std::string& l : r.err_lines())
+    if(l.rfind("mpm assemble: ", 0) == 0)
+    {
+      percents.push_back(std::stoi(l.substr(l.rfind(' ') + 1)));
+      embedding = embedding || l.find("embedding") != std::string::npos;
+    }
+  EXPECT_TRUE(embedding) << r.err;
+  EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end())) << r.err;
+  ASSERT_FALSE(percents.empty());
+  EXPECT_EQ(percents.back(), 100) << r.err;
+}
+
 } // namespace

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -71,6 +72,9 @@ struct Embedding_options
   int anderson_history = 5;
   int max_iterations = 100;  ///< iteration cap of `solve()`
   double tolerance = 1e-6;   ///< stop when the energy decreases by less than this fraction
+  /// Called by `solve()` after each iteration with its number (from 1) and
+  /// energy: progress for a long solve. Empty: not called.
+  std::function<void(int iteration, double energy)> iteration_callback;
 };
 
 /// \ingroup PkgMPMRef
