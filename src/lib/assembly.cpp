@@ -299,6 +299,7 @@ std::vector<Spawned_graph> spawn_part_graphs(const Morphable_part_model& model, 
     s.graph = random_part_graph(model, start, rng, options.edits, &s.edits);
     s.assembly = assemble(model, s.graph, options.assembly);
     spawned.push_back(std::move(s));
+    if(options.progress) options.progress(i + 1, options.count);
   }
   std::stable_sort(spawned.begin(), spawned.end(), [](const Spawned_graph& a, const Spawned_graph& b) {
     return a.assembly.energy_per_part() < b.assembly.energy_per_part();

@@ -41,6 +41,9 @@ int run_spawn(const Args& args, Context& context)
     static_cast<int>(args.integer("iterations", options.assembly.solver.max_iterations));
   const std::string directory = args.text("output");
   context.progress.update("spawning " + std::to_string(options.count) + " graphs", 0.1);
+  options.progress = [&context](int done, int count) {
+    context.progress.update("spawning " + std::to_string(count) + " graphs", 0.1 + 0.8 * done / std::max(1, count));
+  };
   const std::vector<Spawned_graph> spawned = spawn_part_graphs(model, part_graph_of_example(model, example), options);
 
   Json ranking = Json::array();

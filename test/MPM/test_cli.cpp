@@ -474,8 +474,8 @@ TEST_F(Cli, CorrespondProgressAdvancesAcrossPartTypes)
 }
 
 // The solve advances the progress of assemble (it sat at "assembling 20%"
-// for the whole solve of a large graph).
-TEST_F(Cli, AssembleProgressAdvancesThroughTheSolve)
+// for the whole solve of a large graph), and spawn advances by graph.
+TEST_F(Cli, AssembleAndSpawnProgressAdvanceThroughTheirWork)
 {
   const std::string t = path("grid");
   ASSERT_EQ(run("synth hexa-grid --vertices 2000 -o " + quote(t)).status, 0);
@@ -494,6 +494,15 @@ TEST_F(Cli, AssembleProgressAdvancesThroughTheSolve)
   EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end())) << r.err;
   ASSERT_FALSE(percents.empty());
   EXPECT_EQ(percents.back(), 100) << r.err;
+
+  // Spawning advances graph by graph (it sat at 10% for minutes).
+  const Run_result spawn = run("spawn " + quote(path("g.mpm")) + " --count 5 --progress");
+  ASSERT_EQ(spawn.status, 0) << spawn.err;
+  std::vector<int> spawning;
+  for(const std::string& l : spawn.err_lines())
+    if(l.rfind("mpm spawn: spawning", 0) == 0) spawning.push_back(std::stoi(l.substr(l.rfind(' ') + 1)));
+  EXPECT_GE(spawning.size(), 5u) << spawn.err;
+  EXPECT_TRUE(std::is_sorted(spawning.begin(), spawning.end())) << spawn.err;
 }
 
 } // namespace

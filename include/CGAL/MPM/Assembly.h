@@ -9,6 +9,7 @@
 #include <CGAL/MPM/Part_graph.h>
 #include <CGAL/MPM/Part_graph_editing.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,9 @@ struct Spawn_options
   unsigned seed = 1;      ///< seeds the `std::mt19937` all draws come from
   Random_edit_options edits;  ///< the random edits of each graph
   Assembly_options assembly;  ///< how each graph is embedded (targets and placements must stay empty)
+  /// Called after each graph with how many are done and `count`: progress
+  /// for a long run. Empty: not called.
+  std::function<void(int done, int count)> progress;
 };
 
 /// \ingroup PkgMPMRef
