@@ -146,6 +146,12 @@ int run_assemble(const Args& args, Context& context)
     ensure_parent_directory(args.text("save-graph"));
     write_part_graph(model, graph, args.text("save-graph"));
   }
+  // Measured: about 2.7 kB per vertex of the assembly (the factorization
+  // dominates); a graph of a million parts is refused, not attempted.
+  double vertices = 0.;
+  for(const Part_node& node : graph.nodes) vertices += model.types[node.type].number_of_vertices;
+  check_memory("graph", std::to_string(graph.nodes.size()) + " parts (" + format_number(vertices) + " vertices)",
+               4000. * vertices);
   Assembly_options options;
   options.solver.max_iterations = static_cast<int>(args.integer("iterations", options.solver.max_iterations));
   options.solver.tolerance = args.real("tolerance", options.solver.tolerance);
