@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Atomic_file.h>
+#include <CGAL/MPM/internal/Mesh_encoding.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
@@ -1183,16 +1184,23 @@ Labeled_mesh read_labeled_mesh(const std::string& mesh_path, const std::string& 
 }
 
 void write_mesh_file(const Indexed_mesh& mesh, const std::string& path,
-                     const Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>* face_colors)
+                     const Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>* face_colors,
+                     const Mesh_write_options& options)
 {
   const std::string ext = lower_extension(path);
-  if(ext != ".off" && ext != ".obj" && ext != ".ply")
+  if(ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl")
     throw Input_error(path, "", "unsupported extension " + printable(ext.empty() ? "(none)" : ext) +
-                                  " for writing a mesh (supported: .off, .obj, .ply)");
+                                  " for writing a mesh (supported: .off, .obj, .ply, .stl)");
   if(face_colors && face_colors->rows() != mesh.number_of_faces())
     throw Input_error(path, "", std::to_string(face_colors->rows()) + " face colours for " +
                                   std::to_string(mesh.number_of_faces()) + " faces");
   const bool colors = face_colors && ext == ".ply";
+  if(ext == ".stl")
+    return internal::write_file_atomically(
+      path, [&](std::ostream& out) { internal::write_stl(out, mesh, options.binary); }, options.binary);
+  if(ext == ".ply" && options.binary)
+    return internal::write_file_atomically(
+      path, [&](std::ostream& out) { internal::write_binary_ply(out, mesh, colors ? face_colors : nullptr); }, true);
 
   internal::write_file_atomically(path, [&](std::ostream& out) {
     // 17 significant digits make every double read back exactly.

@@ -41,16 +41,17 @@ CGAL::MPM::Morphable_part_model load_model_with_grammar(const std::string& path,
 void check_mesh_output(const std::string& option, const std::string& path)
 {
   const std::string e = lower_extension(path);
-  if(e != ".off" && e != ".obj" && e != ".ply")
-    throw Usage_error("option --" + option + ": '" + path + "' must end in .off, .obj or .ply");
+  if(e != ".off" && e != ".obj" && e != ".ply" && e != ".stl")
+    throw Usage_error("option --" + option + ": '" + path + "' must end in .off, .obj, .ply or .stl");
 }
 
-void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string& path)
+void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string& path,
+                         const CGAL::MPM::Mesh_write_options& options)
 {
   ensure_parent_directory(path);
   if(lower_extension(path) != ".ply")
   {
-    CGAL::MPM::write_mesh_file(assembly.mesh, path);
+    CGAL::MPM::write_mesh_file(assembly.mesh, path, nullptr, options);
     return;
   }
   Eigen::Matrix<unsigned char, Eigen::Dynamic, 3> colors(assembly.mesh.number_of_faces(), 3);
@@ -59,7 +60,7 @@ void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string&
     const auto& c = type_palette[assembly.face_types[f] % type_palette.size()];
     colors.row(f) << c[0], c[1], c[2];
   }
-  CGAL::MPM::write_mesh_file(assembly.mesh, path, &colors);
+  CGAL::MPM::write_mesh_file(assembly.mesh, path, &colors, options);
 }
 
 Json assembly_summary(const CGAL::MPM::Morphable_part_model& model, const CGAL::MPM::Assembly& a)

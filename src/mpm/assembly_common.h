@@ -26,7 +26,8 @@ void check_mesh_output(const std::string& option, const std::string& path);
 
 /// Writes the assembled mesh; PLY files get a colour per face by part type
 /// (the palette of the editing commands).
-void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string& path);
+void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string& path,
+                         const CGAL::MPM::Mesh_write_options& options);
 
 /// Residual energy, per part, per node and per docking, timings.
 Json assembly_summary(const CGAL::MPM::Morphable_part_model& model, const CGAL::MPM::Assembly& assembly);

@@ -59,6 +59,7 @@ const std::vector<Option_spec>& common_options()
     {"json", 0, Value_kind::flag, "", "off", "print the summary as one JSON object on stdout"},
     {"progress", 0, Value_kind::flag, "", "on when stderr is a terminal",
      "show progress on stderr even when it is not a terminal"},
+    {"binary", 0, Value_kind::flag, "", "off", "write PLY and STL meshes in binary (OFF and OBJ stay text)"},
     {"help", 'h', Value_kind::flag, "", "", "print this help and exit"},
   };
   return options;

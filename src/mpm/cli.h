@@ -8,6 +8,8 @@
 #ifndef CGAL_MPM_TOOL_CLI_H
 #define CGAL_MPM_TOOL_CLI_H
 
+#include <CGAL/MPM/Mesh_io.h>
+
 #include <nlohmann/json.hpp>
 
 #include <functional>
@@ -83,6 +85,8 @@ struct Context
   const std::string& command; ///< the subcommand's name
   bool json;                  ///< --json: one JSON object on stdout
   Progress& progress;         ///< progress and warnings on stderr
+  /// --binary: PLY and STL meshes written in binary.
+  CGAL::MPM::Mesh_write_options meshes;
 };
 
 /// An entry of the command table.

@@ -161,7 +161,7 @@ int run_assemble(const Args& args, Context& context)
                        options.solver.max_iterations);
   const Assembly assembly = assemble(model, graph, options);
   context.progress.update("writing " + output, 0.9);
-  write_assembly_mesh(assembly, output);
+  write_assembly_mesh(assembly, output, context.meshes);
   context.progress.done();
 
   Json summary = {{"command", "assemble"}, {"model", path},
@@ -235,11 +235,11 @@ Command make_assemble_command()
       "is when the edit applies): seam vertices are shared, each part starts at its\n"
       "type's mean plus its coordinates placed rigidly on its neighbours, and the\n"
       "embedding solver minimizes the distortion. Prints the residual energy (total,\n"
-      "per part, per node). OUT is .off, .obj or .ply (PLY: per-face colours by type).\n") +
+      "per part, per node). OUT is .off, .obj, .ply or .stl (PLY: per-face colours by type).\n") +
     grammar_text;
   c.min_positionals = c.max_positionals = 1;
   c.options = {
-    {"output", 'o', Value_kind::text, "OUT", "", "mesh to write: .off, .obj or .ply (required)"},
+    {"output", 'o', Value_kind::text, "OUT", "", "mesh to write: .off, .obj, .ply or .stl (required)"},
     {"graph", 0, Value_kind::text, "G.json", "", "part graph file (default: the training example's)"},
     {"example", 0, Value_kind::integer, "N", "0", "training example whose graph is used without --graph", 0, INT_MAX},
     {"insert", 0, Value_kind::text, "EDGE", "", "insert a segment into docking EDGE", -HUGE_VAL, HUGE_VAL, false, true},

@@ -117,7 +117,7 @@ int run_compare(const Args& args, Context& context)
       Indexed_mesh out;
       out.points = result;
       out.triangles = mesh.triangles;
-      write_mesh_file(out, path);
+      write_mesh_file(out, path, nullptr, context.meshes);
       row["output"] = path;
     }
     rows.push_back(row);

@@ -105,7 +105,7 @@ int run_correspond(const Args& args, Context& context)
       const std::string file = path_of(file_safe(name) + "_" + std::to_string(i), ".off");
       context.progress.update("writing " + file, double(written++) / files);
       ensure_parent_directory(file);
-      write_mesh_file(mesh, file);
+      write_mesh_file(mesh, file, nullptr, context.meshes);
       segments.push_back({{"label", refs[i].second},
                           {"file", file},
                           {"order", s.order},

@@ -56,7 +56,7 @@ int run_cut(const Args& args, Context& context)
   context.progress.update("writing files", 0.8);
   const std::string mesh_file = prefix + ".off", seg_file = prefix + ".seg";
   ensure_parent_directory(mesh_file);
-  write_mesh_file(result.mesh.mesh, mesh_file);
+  write_mesh_file(result.mesh.mesh, mesh_file, nullptr, context.meshes);
   write_seg_file(result.mesh.face_labels, seg_file);
   context.progress.done();
 

@@ -56,7 +56,7 @@ int run_spawn(const Args& args, Context& context)
     if(!directory.empty())
     {
       const std::string stem = (std::filesystem::path(directory) / ("spawn_" + std::to_string(s.index))).string();
-      write_assembly_mesh(s.assembly, stem + ".ply");
+      write_assembly_mesh(s.assembly, stem + ".ply", context.meshes);
       write_part_graph(model, s.graph, stem + ".json");
       entry["mesh"] = stem + ".ply";
       entry["graph"] = stem + ".json";

@@ -59,7 +59,7 @@ int run_synth(const Args& args, Context& context)
 
   const std::string mesh_file = prefix + ".off", seg_file = prefix + ".seg", annotation_file = prefix + ".json";
   ensure_parent_directory(mesh_file);
-  write_mesh_file(model.mesh.mesh, mesh_file);
+  write_mesh_file(model.mesh.mesh, mesh_file, nullptr, context.meshes);
   write_seg_file(model.mesh.face_labels, seg_file);
   write_annotation(model.annotation, annotation_file);
   context.progress.done();

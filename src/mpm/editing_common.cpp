@@ -154,8 +154,8 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   const std::string output = args.text("output");
   const std::string extension = lower_extension(output);
   // Refused before solving: the work would be lost at the end.
-  if(extension != ".off" && extension != ".obj" && extension != ".ply")
-    throw Usage_error("option --output: '" + output + "' must end in .off, .obj or .ply");
+  if(extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl")
+    throw Usage_error("option --output: '" + output + "' must end in .off, .obj, .ply or .stl");
   const int example = static_cast<int>(args.integer("example", 0));
 
   context.progress.update("loading " + model_path, 0.);
@@ -204,7 +204,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   edited.points = result;
   edited.triangles = input.mesh.triangles;
   const Color_matrix colors = extension == ".ply" ? part_type_colors(input) : Color_matrix();
-  write_mesh_file(edited, output, extension == ".ply" ? &colors : nullptr);
+  write_mesh_file(edited, output, extension == ".ply" ? &colors : nullptr, context.meshes);
   context.progress.done();
 
   settings["max_iterations"] = options.max_iterations;
@@ -254,13 +254,13 @@ Command make_editing_command(const Editing_command& editing)
     editing.description + "\n\n"
     "MODEL is a model saved by 'mpm learn'; the edit applies to its training example\n"
     "--example. Handles (doc/MPM/Handles.md) are vertex ids of that example's mesh.\n"
-    "OUT is an .off, .obj or .ply file (PLY: per-face colours by part type). The\n"
+    "OUT is an .off, .obj, .ply or .stl file (PLY: per-face colours by part type). The\n"
     "summary gives the energy of every iteration, the residual energy, the timings\n"
     "and the RMS displacement from the input relative to its bounding-box diagonal.";
   c.min_positionals = c.max_positionals = 1;
   c.options = editing.options;
   const std::vector<Option_spec> shared = {
-    {"output", 'o', Value_kind::text, "OUT", "", "mesh to write: .off, .obj or .ply (required)"},
+    {"output", 'o', Value_kind::text, "OUT", "", "mesh to write: .off, .obj, .ply or .stl (required)"},
     {"example", 0, Value_kind::integer, "N", "0", "training example to edit", 0, INT_MAX},
     {"mesh", 0, Value_kind::text, "M.off", "none",
      "another pose of the example's mesh (same triangles) to start from"},

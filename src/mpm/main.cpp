@@ -124,7 +124,7 @@ int dispatch(const std::vector<std::string>& argv)
   CGAL::MPM::internal::guard_inputs_against_overwriting(true);
   CGAL::MPM::internal::remove_temporary_files_on_signals();
   mpm::Progress progress(command.name, args.flag("progress"));
-  mpm::Context context{command.name, args.flag("json"), progress};
+  mpm::Context context{command.name, args.flag("json"), progress, CGAL::MPM::Mesh_write_options{args.flag("binary")}};
   return command.run(args, context);
 }
 

@@ -45,6 +45,34 @@ TEST(MeshIo, RoundTripsEveryWritableFormatExactly)
   }
 }
 
+// STL has no shared vertices: the reader merges equal corners back, so
+// the tetrahedron returns with its 4 vertices (binary: in single precision).
+TEST(MeshIo, WritesBinaryPlyAndAsciiAndBinaryStl)
+{
+  mpm_test::Scratch_directory dir;
+  const Indexed_mesh m = tetrahedron();
+  Mesh_write_options binary;
+  binary.binary = true;
+  write_mesh_file(m, dir.file("b.ply"), nullptr, binary);
+  const Mesh_file ply = read_mesh_file(dir.file("b.ply"));
+  EXPECT_EQ(ply.mesh.points, m.points);
+  EXPECT_EQ(ply.mesh.triangles, m.triangles);
+  EXPECT_EQ(read_bytes(dir.file("b.ply")).find("format binary_little_endian 1.0"), 4u);
+  for(const bool b : {false, true})
+  {
+    const std::string path = dir.file(b ? "b.stl" : "a.stl");
+    write_mesh_file(m, path, nullptr, Mesh_write_options{b});
+    const Mesh_file stl = read_mesh_file(path);
+    ASSERT_EQ(stl.mesh.number_of_vertices(), 4) << path;
+    ASSERT_EQ(stl.mesh.number_of_faces(), 4) << path;
+    for(int f = 0; f < 4; ++f)
+      for(int c = 0; c < 3; ++c)
+        EXPECT_LT((stl.mesh.points.row(stl.mesh.triangles[f][c]) - m.points.row(m.triangles[f][c])).norm(), b ? 1e-7 : 1e-15)
+          << path << " face " << f;
+  }
+  EXPECT_EQ(mpm_test::fs::file_size(dir.file("b.stl")), 84u + 4u * 50u);
+}
+
 TEST(MeshIo, PlyCarriesFaceColours)
 {
   mpm_test::Scratch_directory dir;
@@ -344,7 +372,7 @@ TEST(AtomicFile, ReplacesWholeFilesAndLeavesNoTemporaries)
   EXPECT_TRUE(mpm_test::fs::is_directory(dir.file("taken.off")));
   MPM_EXPECT_INPUT_ERROR(write_seg_file({1}, dir.file("missing_dir/a.seg")), "a.seg", "cannot write");
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out.off", "taken.off"}));
-  MPM_EXPECT_INPUT_ERROR(write_mesh_file(tetrahedron(), dir.file("out.stl")), "out.stl", "supported: .off, .obj, .ply");
+  MPM_EXPECT_INPUT_ERROR(write_mesh_file(tetrahedron(), dir.file("out.xyz")), "out.xyz", "supported: .off, .obj, .ply, .stl");
 }
 
 TEST(AtomicFile, UnwritableDirectoryKeepsTheOldFile)

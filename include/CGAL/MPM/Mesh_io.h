@@ -52,11 +52,23 @@ Labeled_mesh read_labeled_mesh(const std::string& mesh_path, const std::string& 
 std::vector<int> connected_component_labels(const Indexed_mesh& mesh);
 
 /// \ingroup PkgMPMRef
-/// Writes a mesh as OFF, OBJ or PLY (chosen by extension). With
+/// How `write_mesh_file()` encodes a mesh.
+struct Mesh_write_options
+{
+  /// PLY and STL: binary (little-endian) instead of ASCII. OFF and OBJ are
+  /// always ASCII.
+  bool binary = false;
+};
+
+/// \ingroup PkgMPMRef
+/// Writes a mesh as OFF, OBJ, PLY or STL (chosen by extension). With
 /// `face_colors` (one RGB row per face, 0..255), PLY files get per-face
-/// colours. The file is written to a temporary name and renamed into place.
+/// colours. STL has no shared vertices: each triangle is written with its
+/// own three corners (single precision when binary). The file is written to
+/// a temporary name and renamed into place.
 void write_mesh_file(const Indexed_mesh& mesh, const std::string& path,
-                     const Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>* face_colors = nullptr);
+                     const Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>* face_colors = nullptr,
+                     const Mesh_write_options& options = Mesh_write_options());
 
 /// \ingroup PkgMPMRef
 /// Writes labels in `.seg` format (temporary file renamed into place).
