@@ -66,13 +66,24 @@ Point_matrix exaggerated_target(const Part_type& type, const Eigen::VectorXd& co
   return rest + (factor - 1.) * (space.shape(coordinates) - space.mean);
 }
 
-bool turns_a_face_inside_out(const Part_type& type, const Point_matrix& rest, const Point_matrix& target)
+// Whether scaling the coordinates of some part of example `example` by
+// `factor` would turn a face of it inside out, its rest (in its space's
+// frame) against its target.
+bool scaled_coordinates_fold(const Morphable_part_model& model, int example, double factor)
 {
-  Indexed_mesh before, after;
-  before.triangles = after.triangles = type.triangles;
-  before.points = rest;
-  after.points = target;
-  return !inverted_faces(after, before).empty();
+  // A missing example is make_problem()'s to report.
+  if(factor == 1. || example < 0 || example >= static_cast<int>(model.examples.size())) return false;
+  for(const Part_node& node : model.examples[example].graph.nodes)
+  {
+    const Part_type& type = model.types[node.type];
+    const std::vector<int> own(node.vertices.begin(), node.vertices.begin() + type.number_of_vertices);
+    Indexed_mesh before, after;
+    before.triangles = after.triangles = type.triangles;
+    before.points = internal::to_space_frame(node.motion, internal::gather_rows(model.examples[example].mesh.points, own));
+    after.points = exaggerated_target(type, node.coordinates, before.points, factor, false);
+    if(!inverted_faces(after, before).empty()) return true;
+  }
+  return false;
 }
 
 } // namespace
@@ -85,19 +96,14 @@ Embedding_problem make_caricature_problem(const Morphable_part_model& model, dou
   // would turn a face of some part inside out, every part is exaggerated by
   // its local rotations instead: one rule for all, so that neighbouring
   // parts agree at their seams (mixing the two left more folds).
-  bool by_rotations = false, folds = false;
-  const auto policy = [factor, &by_rotations, &folds](const Part_type& type, const Eigen::VectorXd& coordinates,
-                                                      const Point_matrix& rest) {
+  const bool by_rotations = scaled_coordinates_fold(model, example, factor);
+  return make_problem(model, example, [factor, by_rotations](const Part_type& type, const Eigen::VectorXd& coordinates,
+                                                             const Point_matrix& rest) {
     Part_target t;
     t.mean = exaggerated_target(type, coordinates, rest, factor, by_rotations);
     t.sigmas = type.space.sigmas;
-    if(!by_rotations && factor != 1. && turns_a_face_inside_out(type, rest, t.mean)) folds = true;
     return t;
-  };
-  Embedding_problem problem = make_problem(model, example, policy, learned_sigmas);
-  if(!folds) return problem;
-  by_rotations = true;
-  return make_problem(model, example, policy, learned_sigmas);
+  }, learned_sigmas);
 }
 
 Embedding_problem make_symmetrization_problem(const Morphable_part_model& model, int example,

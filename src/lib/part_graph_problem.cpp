@@ -260,19 +260,14 @@ namespace {
 void meet_halfway(const Docking_rule& rule, const std::vector<Seam_vertex>& merged, const Point_matrix& first_rest,
                   const Point_matrix& second_rest, Point_matrix& first, Point_matrix& second)
 {
-  // The disagreement of two placed shapes on their seam, in the first's frame.
-  const auto disagreement = [&](const Point_matrix& a, const Point_matrix& b, Point_matrix& on_a, Point_matrix& on_b,
-                                Rigid_motion& onto_a) {
-    seam_points(rule, merged, a, b, on_a, on_b);
-    onto_a = fit_rigid_motion(on_b, on_a);
-    return Point_matrix(on_a - onto_a.apply(on_b));
-  };
   Point_matrix on_first, on_second, rest_on_first, rest_on_second;
   seam_points(rule, merged, first, second, on_first, on_second);
   if(on_first.rows() == 0 || seam_is_collinear(on_second)) return;
-  Rigid_motion onto_first, rest_onto_first;
-  const Point_matrix gap = disagreement(first, second, on_first, on_second, onto_first) -
-                           disagreement(first_rest, second_rest, rest_on_first, rest_on_second, rest_onto_first);
+  seam_points(rule, merged, first_rest, second_rest, rest_on_first, rest_on_second);
+  // The disagreements on the seam, in the first part's frame.
+  const Rigid_motion onto_first = fit_rigid_motion(on_second, on_first);
+  const Point_matrix gap = on_first - onto_first.apply(on_second) -
+                           (rest_on_first - fit_rigid_motion(rest_on_second, rest_on_first).apply(rest_on_second));
   const Eigen::RowVector3d centre = on_first.colwise().mean();
   const double radius = std::sqrt((on_first.rowwise() - centre).rowwise().squaredNorm().mean());
   if(!(radius > 0.) || !(gap.norm() > 0.)) return;
@@ -376,21 +371,20 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
   // Each part's target shape, placed where the part rests: pair targets are
   // assembled from them, so that parts and pairs ask for the same shape.
   // Neighbours meet halfway where their targets disagree on a seam.
+  std::vector<Point_matrix> rest_of_node; // each node's own points where the mesh rests
   std::vector<Part_target> targets;
   std::vector<Point_matrix> placed_targets;
   for(std::size_t i = 0; i < graph.nodes.size(); ++i)
   {
     const Part_node& node = graph.nodes[i];
+    rest_of_node.push_back(gather_rows(mesh.points, type_vertices(node)));
     targets.push_back(policy(static_cast<int>(i), model.types[node.type].space, node.coordinates,
-                             to_space_frame(node.motion, gather_rows(mesh.points, type_vertices(node))),
-                             model.types[node.type].name));
+                             to_space_frame(node.motion, rest_of_node.back()), model.types[node.type].name));
     placed_targets.push_back(node.motion.apply(targets.back().mean));
   }
   for(const Part_edge& e : graph.edges)
-    meet_halfway(model.rules[e.rule], merged_seam_of(model.rules[e.rule], e),
-                 gather_rows(mesh.points, type_vertices(graph.nodes[e.first])),
-                 gather_rows(mesh.points, type_vertices(graph.nodes[e.second])), placed_targets[e.first],
-                 placed_targets[e.second]);
+    meet_halfway(model.rules[e.rule], merged_seam_of(model.rules[e.rule], e), rest_of_node[e.first],
+                 rest_of_node[e.second], placed_targets[e.first], placed_targets[e.second]);
   for(std::size_t i = 0; i < graph.nodes.size(); ++i)
   {
     const Part_node& node = graph.nodes[i];
@@ -475,8 +469,7 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
     c.border.erase(std::unique(c.border.begin(), c.border.end()), c.border.end());
     c.edges = rule.edges;
     c.mean = pair_target(rule, merged_seam_of(rule, e), placed_targets[e.first], placed_targets[e.second],
-                         gather_rows(mesh.points, type_vertices(*side[0])), gather_rows(mesh.points, type_vertices(*side[1])),
-                         e.motion, gather_rows(mesh.points, c.vertices));
+                         rest_of_node[e.first], rest_of_node[e.second], e.motion, gather_rows(mesh.points, c.vertices));
     c.modes = rule.space.modes;
     c.sigmas = pair_sigmas(rule.space);
     c.sigma_bound = model.parameters.sigma_bound;
