@@ -330,10 +330,6 @@ Command make_fit_command()
   c.max_positionals = -1;
   c.options = {
     {"output", 'o', Value_kind::text, "FITTED", "none", "write the fitted surface (OFF, OBJ or PLY)"},
-    {"labels", 0, Value_kind::text, "SEG", "MESH.seg if present, else components", "part labels of the MESH before it",
-     -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false, true},
-    {"annotation", 0, Value_kind::text, "JSON", "MESH.json if present", "part types of the MESH before it",
-     -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false, true},
     {"segment", 0, Value_kind::integer, "LABEL", "every segment", "fit only this segment (repeatable)", 0, INT_MAX,
      false, true},
     {"skip-unfittable", 0, Value_kind::flag, "", "", "list segments that cannot be fitted instead of failing"},
@@ -345,6 +341,8 @@ Command make_fit_command()
     {"held-out", 0, Value_kind::integer, "K", "each in turn", "with --leave-one-out: hold out only mesh K (from 0)",
      0, INT_MAX},
   };
+  const std::vector<Option_spec> mesh_files = mesh_file_options();
+  c.options.insert(c.options.begin() + 1, mesh_files.begin(), mesh_files.end());
   c.run = run_fit;
   return c;
 }

@@ -240,10 +240,6 @@ Command make_learn_command()
   c.max_positionals = -1;
   c.options = {
     {"output", 'o', Value_kind::text, "MODEL", "", "model file to write (required)"},
-    {"labels", 0, Value_kind::text, "SEG", "MESH.seg if present, else components",
-     "part labels of the preceding MESH", -HUGE_VAL, HUGE_VAL, false, true},
-    {"annotation", 0, Value_kind::text, "JSON", "MESH.json if present, else none",
-     "annotation of the preceding MESH", -HUGE_VAL, HUGE_VAL, false, true},
     {"write-annotation", 0, Value_kind::text, "FILE", "none",
      "write the part types proposed for the preceding MESH as an annotation", -HUGE_VAL, HUGE_VAL, false, true},
     {"modes", 0, Value_kind::integer, "N", "annotation's, else 0 = by explained variance",
@@ -257,6 +253,8 @@ Command make_learn_command()
     {"sigma-bound", 0, Value_kind::real, "S", "annotation's, else a third of each cluster's diameter",
      "width of the blending region at part borders", 0, HUGE_VAL, true},
   };
+  const std::vector<Option_spec> mesh_files = mesh_file_options();
+  c.options.insert(c.options.begin() + 1, mesh_files.begin(), mesh_files.end());
   c.run = run_learn;
   return c;
 }

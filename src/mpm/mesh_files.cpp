@@ -3,6 +3,7 @@
 #include "mesh_files.h"
 
 #include <filesystem>
+#include <limits>
 
 namespace mpm {
 
@@ -44,6 +45,17 @@ std::vector<Mesh_files> collect_mesh_files(const Args& args, bool first_is_model
     if(!m.annotation_given && fs::is_regular_file(json, ec)) m.annotation = json;
   }
   return meshes;
+}
+
+std::vector<Option_spec> mesh_file_options()
+{
+  const double none = std::numeric_limits<double>::infinity();
+  return {
+    {"labels", 0, Value_kind::text, "SEG", "MESH.seg if present, else components", "part labels of the preceding MESH",
+     -none, none, false, true},
+    {"annotation", 0, Value_kind::text, "JSON", "MESH.json if present, else none", "annotation of the preceding MESH",
+     -none, none, false, true},
+  };
 }
 
 } // namespace mpm

@@ -27,6 +27,10 @@ struct Mesh_files
 // `--write-annotation` is accepted when `write_annotation` is true.
 std::vector<Mesh_files> collect_mesh_files(const Args& args, bool first_is_model, bool write_annotation);
 
+// The --labels and --annotation options that collect_mesh_files() reads,
+// repeatable, each for the MESH before it.
+std::vector<Option_spec> mesh_file_options();
+
 } // namespace mpm
 
 #endif
