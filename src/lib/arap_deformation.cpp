@@ -142,7 +142,7 @@ public:
                               " handles failed; degenerate triangles can make it singular");
   }
 
-  int deform(int max_iterations, double tolerance)
+  int deform(int max_iterations, double tolerance, const std::function<void(int)>& after_iteration)
   {
     preprocess();
     Point_matrix previous = positions();
@@ -152,6 +152,7 @@ public:
       if(!current.allFinite())
         throw Computation_error("ARAP: non-finite positions after iteration " + std::to_string(iteration) +
                                 "; degenerate triangles give infinite cotangent weights");
+      if(after_iteration) after_iteration(iteration);
       if(tolerance > 0 && (current - previous).rowwise().norm().maxCoeff() <= tolerance * diagonal_)
         return iteration;
       previous.swap(current);
@@ -197,9 +198,9 @@ Arap_deformation& Arap_deformation::operator=(Arap_deformation&&) noexcept = def
 
 void Arap_deformation::set_handles(const Handle_set& handles) { implementation_->set_handles(handles); }
 void Arap_deformation::preprocess() { implementation_->preprocess(); }
-int Arap_deformation::deform(int max_iterations, double tolerance)
+int Arap_deformation::deform(int max_iterations, double tolerance, const std::function<void(int)>& after_iteration)
 {
-  return implementation_->deform(max_iterations, tolerance);
+  return implementation_->deform(max_iterations, tolerance, after_iteration);
 }
 void Arap_deformation::deform_one_iteration() { implementation_->deform_one_iteration(); }
 Point_matrix Arap_deformation::positions() const { return implementation_->positions(); }

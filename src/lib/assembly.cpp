@@ -294,6 +294,7 @@ std::vector<Spawned_graph> spawn_part_graphs(const Morphable_part_model& model, 
   std::vector<Spawned_graph> spawned;
   for(int i = 0; i < options.count; ++i)
   {
+    internal::throw_if_cancelled(options.assembly.solver.cancel, "spawning");
     Spawned_graph s;
     s.index = i;
     s.graph = random_part_graph(model, start, rng, options.edits, &s.edits);

@@ -108,7 +108,10 @@ public:
     arap_.reset();
     arap_.set_handles(handles_);
     arap_.preprocess();
-    iterations_ = arap_.deform(options_.arap_max_iterations, options_.arap_tolerance);
+    iterations_ = arap_.deform(options_.arap_max_iterations, options_.arap_tolerance, [this](int iteration) {
+      internal::throw_if_cancelled(options_.cancel, "ARAP");
+      if(options_.iteration_callback) options_.iteration_callback(iteration);
+    });
     return arap_.positions();
   }
   int iterations() const override { return iterations_; }
@@ -183,7 +186,14 @@ std::unique_ptr<Deformation_method> make_deformation_method(const std::string& n
     throw Input_error("model", "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   const Indexed_mesh& mesh = model.examples[std::size_t(example)].mesh;
-  if(name == "mpm") return std::make_unique<Mpm_method>(model, example, options.mpm);
+  if(name == "mpm")
+  {
+    Embedding_options mpm = options.mpm;
+    if(mpm.cancel == nullptr) mpm.cancel = options.cancel;
+    if(!mpm.iteration_callback && options.iteration_callback)
+      mpm.iteration_callback = [callback = options.iteration_callback](int iteration, double) { callback(iteration); };
+    return std::make_unique<Mpm_method>(model, example, mpm);
+  }
   if(name == "arap") return std::make_unique<Arap_method>(mesh, Arap_variant::original, options);
   if(name == "arap-sre") return std::make_unique<Arap_method>(mesh, Arap_variant::smooth_rotation_enhanced, options);
   if(name == "laplacian") return std::make_unique<Laplacian_method>(mesh, options.mpm.handle_weight);

@@ -1210,6 +1210,7 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
   const std::string element = "part type \"" + type_name + "\"";
   if(segments.empty()) throw Input_error("", element, "no segment to put in correspondence");
   const auto progress = [&](const std::string& stage, double fraction) {
+    internal::throw_if_cancelled(options.cancel, "correspondence");
     if(options.progress) options.progress(stage, fraction);
   };
   Dense_correspondence result;

@@ -1283,6 +1283,7 @@ Solve_report Embedding_solver::solve_from_current_state()
   int rises = 0;
   for(int it = 0; it < d.options.max_iterations; ++it)
   {
+    internal::throw_if_cancelled(d.options.cancel, "solve");
     double e = iterate();
     const Eigen::VectorXd g = pack();
     const Eigen::VectorXd candidate = anderson.next(x, g);

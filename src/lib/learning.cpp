@@ -576,6 +576,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
                                         const std::vector<Training_input>* originals)
 {
   const auto progress = [&](const std::string& stage, double fraction) {
+    internal::throw_if_cancelled(options.cancel, "learning");
     if(options.progress) options.progress(stage, fraction);
   };
   const auto warn = [&](const std::string& w) {
@@ -1024,11 +1025,13 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
         retry = true;
         continue;
       }
+      internal::throw_if_cancelled(options.cancel, "learning");
       if(options.progress) options.progress("correspondence of " + name, double(type_index - 1) / segments_of_type.size());
       std::vector<Correspondence_segment> segments;
       for(const Segment_ref& r : refs) segments.push_back(correspondence_segment(inputs[r.example], r, name, tag_of_type));
       Dense_correspondence_options co = options.correspondence;
       if(options.warning && !co.warning) co.warning = options.warning;
+      if(co.cancel == nullptr) co.cancel = options.cancel;
       if(options.progress && !co.progress)
         co.progress = [&](const std::string& stage, double within) {
           // One scale for all types: the type's share, advanced within it.

@@ -93,9 +93,15 @@ int run_compare(const Args& args, Context& context)
   for(std::size_t m = 0; m < methods.size(); ++m)
   {
     const std::string& name = methods[m];
-    context.progress.update("running " + name, 0.05 + 0.9 * double(m) / double(methods.size()));
+    const double from = 0.05 + 0.9 * double(m) / double(methods.size()), to = from + 0.9 / double(methods.size());
+    context.progress.update("running " + name, from);
+    // The iterative methods advance within their share as they approach their cap.
+    Deformation_method_options method_options = options;
+    const int cap = name == "mpm" ? options.mpm.max_iterations : options.arap_max_iterations;
+    const std::function<void(int, double)> advance = iteration_progress(context.progress, "running " + name, from, to, cap);
+    method_options.iteration_callback = [advance](int iteration) { advance(iteration, 0.); };
     const Clock::time_point start = Clock::now();
-    auto method = make_deformation_method(name, model, example, options);
+    auto method = make_deformation_method(name, model, example, method_options);
     method->set_handles(handles);
     const Point_matrix result = method->deform();
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -187,10 +193,10 @@ Command make_compare_command()
     "are fractions of the bounding-box diagonal. With -o DIR, writes DIR/METHOD.ply.";
   c.min_positionals = c.max_positionals = 1;
   c.options = {
-    {"handles", 0, Value_kind::text, "H.json", "", "handle file (required)"},
+    {"handles", 0, Value_kind::input_file, "H.json", "", "handle file (required)"},
     {"methods", 0, Value_kind::text, "LIST", "mpm,arap,arap-sre,laplacian,tps,pca", "comma-separated methods to run"},
-    {"output", 'o', Value_kind::text, "DIR", "none", "directory for the meshes (METHOD.ply)"},
-    {"truth", 0, Value_kind::text, "POSE", "none", "mesh of the true pose (same vertices) to measure errors against"},
+    {"output", 'o', Value_kind::output_prefix, "DIR", "none", "directory for the meshes (METHOD.ply)"},
+    {"truth", 0, Value_kind::input_file, "POSE", "none", "mesh of the true pose (same vertices) to measure errors against"},
     {"example", 0, Value_kind::integer, "N", "0", "training example to deform", 0, INT_MAX},
     {"arap-iterations", 0, Value_kind::integer, "N", "1000", "iteration cap of ARAP", 1, INT_MAX},
   };

@@ -6,6 +6,7 @@
 #include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Indexed_mesh.h>
 
+#include <functional>
 #include <memory>
 
 namespace CGAL {
@@ -64,7 +65,9 @@ public:
   /// not report how many iterations it ran. Returns the number of
   /// iterations run. Throws `Computation_error` when positions become
   /// non-finite (degenerate triangles).
-  int deform(int max_iterations, double tolerance);
+  /// `after_iteration`, when given, is called with each iteration's number
+  /// (from 1): progress, or a cancellation check that throws.
+  int deform(int max_iterations, double tolerance, const std::function<void(int iteration)>& after_iteration = {});
 
   /// Exactly one local/global iteration (solve with the current rotations,
   /// then fit the rotations), for timing.

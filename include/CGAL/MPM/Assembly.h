@@ -106,7 +106,8 @@ struct Spawn_options
   Random_edit_options edits;  ///< the random edits of each graph
   Assembly_options assembly;  ///< how each graph is embedded (targets and placements must stay empty)
   /// Called after each graph with how many are done and `count`: progress
-  /// for a long run. Empty: not called.
+  /// for a long run. Empty: not called. (`assembly.solver.cancel`, checked
+  /// before each graph and each iteration, stops the run.)
   std::function<void(int done, int count)> progress;
 };
 

@@ -9,6 +9,7 @@
 #include <CGAL/MPM/Indexed_mesh.h>
 #include <CGAL/MPM/Morphable_part_model.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,13 @@ struct Deformation_method_options
   /// ARAP: iteration cap and tolerance of `Arap_deformation::deform()`.
   int arap_max_iterations = 1000;
   double arap_tolerance = 1e-6; ///< ARAP: largest vertex move, relative to the bounding-box diagonal, that stops
+  /// Called by the iterative methods (MPM, ARAP) after each iteration with
+  /// its number (from 1): progress for a long run. Empty: not called.
+  std::function<void(int iteration)> iteration_callback;
+  /// Checked by the iterative methods before each iteration: raised,
+  /// `deform()` throws `Operation_cancelled`. It also stands for
+  /// `mpm.cancel` when that is null.
+  Cancellation_flag cancel = nullptr;
 };
 
 /// \ingroup PkgMPMRef

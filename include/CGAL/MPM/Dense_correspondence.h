@@ -3,6 +3,7 @@
 #ifndef CGAL_MPM_DENSE_CORRESPONDENCE_H
 #define CGAL_MPM_DENSE_CORRESPONDENCE_H
 
+#include <CGAL/MPM/Cancellation.h>
 #include <CGAL/MPM/Indexed_mesh.h>
 
 #include <functional>
@@ -57,6 +58,8 @@ struct Dense_correspondence_options
   double flipped_warning_fraction = 0.02;
   /// Called with a stage name and the fraction done (0..1).
   std::function<void(const std::string& stage, double fraction)> progress;
+  /// Checked before each segment: raised, it throws `Operation_cancelled`.
+  Cancellation_flag cancel = nullptr;
   /// Called with each warning as it arises (they are also collected in
   /// `Dense_correspondence::warnings`): a segment only a mirror image of the
   /// template would cover, or one on which the correspondence folds.

@@ -3,6 +3,7 @@
 #ifndef CGAL_MPM_EMBEDDING_SOLVER_H
 #define CGAL_MPM_EMBEDDING_SOLVER_H
 
+#include <CGAL/MPM/Cancellation.h>
 #include <CGAL/MPM/Embedding_problem.h>
 #include <CGAL/MPM/Indexed_mesh.h>
 
@@ -75,6 +76,9 @@ struct Embedding_options
   /// Called by `solve()` after each iteration with its number (from 1) and
   /// energy: progress for a long solve. Empty: not called.
   std::function<void(int iteration, double energy)> iteration_callback;
+  /// Checked by `solve()` before each iteration: raised, it throws
+  /// `Operation_cancelled`; the solver keeps the last finished iteration.
+  Cancellation_flag cancel = nullptr;
 };
 
 /// \ingroup PkgMPMRef

@@ -37,6 +37,9 @@ struct Learning_options
   /// Options of the dense correspondence run for part types whose
   /// instances have different triangulations.
   Dense_correspondence_options correspondence;
+  /// Checked at each stage (and by the correspondence, before each
+  /// segment): raised, learning throws `Operation_cancelled`.
+  Cancellation_flag cancel = nullptr;
 };
 
 /// \ingroup PkgMPMRef
