@@ -202,6 +202,10 @@ void remove_temporary_files_on_signals()
   for(int signal_number : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal_number, remove_temporaries_and_reraise);
 }
 
+int remove_on_signals(const std::string& path) { return register_temporary(path); }
+
+void forget_on_signals(int slot) { unregister_temporary(slot); }
+
 void check_readable_file(const std::string& path)
 {
   std::error_code ec;

@@ -29,6 +29,19 @@ void check_mesh_output(const std::string& option, const std::string& path);
 void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string& path,
                          const CGAL::MPM::Mesh_write_options& options);
 
+/// Energy per part of the training example's own graph assembled with
+/// `options`: what an assembly from this model normally leaves.
+double training_energy_per_part(const CGAL::MPM::Morphable_part_model& model, int example,
+                                CGAL::MPM::Assembly_options options);
+
+/// What makes an assembly doubtful, one sentence each (empty: nothing): the
+/// solve stopped at the iteration cap, or the residual energy per part is
+/// over 10^3 times `reference` (`training_energy_per_part()`), as a cycle
+/// that cannot close or parts forced far apart leave. `closed` lists the
+/// cycles closed on the command line, named in the sentences.
+std::vector<std::string> assembly_doubts(const CGAL::MPM::Assembly& assembly, double reference,
+                                         const std::vector<std::string>& closed);
+
 /// Residual energy, per part, per node and per docking, timings.
 Json assembly_summary(const CGAL::MPM::Morphable_part_model& model, const CGAL::MPM::Assembly& assembly);
 

@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli.h"
+#include "standard_streams.h"
 
 #include <CGAL/MPM/Input_error.h>
 
@@ -122,12 +123,21 @@ const Option_spec* find_option(const Command& c, const std::string& name, char s
   return nullptr;
 }
 
+bool is_output(Value_kind kind) { return kind == Value_kind::output_file || kind == Value_kind::output_prefix; }
+
 bool looks_like_option(const std::string& s)
 {
   return s.size() > 1 && s[0] == '-' && !std::isdigit(static_cast<unsigned char>(s[1])) && s[1] != '.';
 }
 
 } // namespace
+
+Value_kind option_kind(const Command& command, const std::string& option)
+{
+  if(option.empty()) return command.positionals_are_files ? Value_kind::input_file : Value_kind::text;
+  const Option_spec* spec = find_option(command, option, 0);
+  return spec != nullptr ? spec->kind : Value_kind::text;
+}
 
 bool wants_help(const std::vector<std::string>& arguments)
 {
@@ -253,7 +263,8 @@ std::string usage_text(const Command& c)
   };
   section("Options", c.options);
   section("Common options", common_options());
-  s << "\nExit status: 0 success, 1 input or computation error, 2 usage error.\n";
+  s << "\nExit status: 0 success, 1 input or computation error, 2 usage error,\n"
+       "3 result written with a warning.\n";
   return s.str();
 }
 
@@ -268,9 +279,10 @@ Progress::Progress(const std::string& command, bool requested)
 
 Progress::~Progress() { done(); }
 
-void Progress::update(const std::string& stage, double fraction)
+void Progress::update(const std::string& spelled_stage, double fraction)
 {
   if(!enabled_) return;
+  const std::string stage = as_the_user_wrote(spelled_stage);
   const int percent = static_cast<int>(std::floor(std::clamp(fraction, 0., 1.) * 100. + 1e-9));
   const bool new_stage = stage != stage_;
   if(!new_stage && percent == percent_) return;
@@ -312,7 +324,7 @@ void Progress::warning(const std::string& message)
 {
   if(line_open_) std::fputs("\r\033[K", stderr);
   line_open_ = false;
-  std::fprintf(stderr, "mpm: warning: %s\n", message.c_str());
+  std::fprintf(stderr, "mpm: warning: %s\n", as_the_user_wrote(message).c_str());
   std::fflush(stderr);
   percent_ = -1; // redraw the progress line at the next update
 }
@@ -384,12 +396,11 @@ void refuse_overwriting(const std::string& output, const std::vector<std::string
 
 void refuse_outputs_over_inputs(const Command& command, const Args& args)
 {
-  const auto is_output = [](const std::string& option) { return option == "output" || option == "write-annotation"; };
   std::vector<std::string> inputs, outputs;
   for(const Arg_item& item : args.items)
   {
     std::error_code ec;
-    if(is_output(item.option))
+    if(is_output(option_kind(command, item.option)))
     {
       outputs.push_back(item.value);
       for(const std::string& extension : command.prefix_extensions) outputs.push_back(item.value + extension);

@@ -32,11 +32,14 @@ struct Usage_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// Exit codes of the tool.
-enum Exit_code { exit_ok = 0, exit_failure = 1, exit_usage = 2 };
+/// Exit codes of the tool. `exit_warning`: the result was written, but a
+/// check found it doubtful (the warning says why; doc/MPM/Command_line.md).
+enum Exit_code { exit_ok = 0, exit_failure = 1, exit_usage = 2, exit_warning = 3 };
 
-/// What an option takes.
-enum class Value_kind { flag, integer, real, text };
+/// What an option takes. Files are text with a role: an input file or a
+/// single output file may be `-` (standard input or output); an output
+/// prefix or directory names several files and may not.
+enum class Value_kind { flag, integer, real, text, input_file, output_file, output_prefix };
 
 /// One option of a command: `--name VALUE`, `--name=VALUE` or `-s VALUE`.
 struct Option_spec
@@ -103,6 +106,9 @@ struct Command
   std::function<int(const Args&, Context&)> run; ///< returns the exit code
   /// Extensions of the files written next to an output prefix (`-o PREFIX`).
   std::vector<std::string> prefix_extensions;
+  /// The positional arguments are files (`MODEL`, `MESH`), so `-` reads
+  /// standard input; false where they are names (`FAMILY`).
+  bool positionals_are_files = true;
 };
 
 /// Options every command takes (--json, --progress, --help).
@@ -112,6 +118,10 @@ const std::vector<Option_spec>& common_options();
 /// unknown option, a missing or malformed value, a repeated option or a
 /// wrong number of positional arguments.
 Args parse_arguments(const Command& command, const std::vector<std::string>& arguments);
+
+/// The kind of `option` (a long name) of `command`; for "" (a positional
+/// argument) `input_file` when the command's positionals are files.
+Value_kind option_kind(const Command& command, const std::string& option);
 
 /// True when `arguments` ask for help (`--help` or `-h` before any `--`).
 bool wants_help(const std::vector<std::string>& arguments);

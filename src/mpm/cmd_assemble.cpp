@@ -160,9 +160,20 @@ int run_assemble(const Args& args, Context& context)
     iteration_progress(context.progress, "embedding " + std::to_string(graph.nodes.size()) + " parts", 0.3, 0.9,
                        options.solver.max_iterations);
   const Assembly assembly = assemble(model, graph, options);
-  context.progress.update("writing " + output, 0.9);
+  // The training graph itself, unedited, is its own reference.
+  const bool is_training_graph = graph_file.empty() && edits.empty();
+  context.progress.update("comparing with the training example's graph", 0.9);
+  const double reference = is_training_graph ? assembly.energy_per_part()
+                                             : training_energy_per_part(model, example_of(args, model, path), options);
+  std::vector<std::string> closed;
+  for(const Arg_item& item : args.items)
+    if(item.option == "close") closed.push_back("--close " + item.value);
+  const std::vector<std::string> warnings = assembly_doubts(assembly, reference, closed);
+  context.progress.update("writing " + output, 0.95);
   write_assembly_mesh(assembly, output, context.meshes);
   context.progress.done();
+  for(const std::string& w : warnings) context.progress.warning(w);
+  const int status = warnings.empty() ? exit_ok : exit_warning;
 
   Json summary = {{"command", "assemble"}, {"model", path},
                   {"graph", graph_file.empty() ? Json("example " + std::to_string(args.integer("example", 0)))
@@ -170,12 +181,14 @@ int run_assemble(const Args& args, Context& context)
                   {"edits", edits}};
   const Json details = assembly_summary(model, assembly);
   for(const auto& [key, value] : details.items()) summary[key] = value;
+  summary["training_energy_per_part"] = reference;
+  summary["warnings"] = warnings;
   summary["output"] = output;
   if(args.has("save-graph")) summary["saved_graph"] = args.text("save-graph");
   if(context.json)
   {
     print_json(summary);
-    return exit_ok;
+    return status;
   }
   std::cout << "Assembled " << assembly.graph.nodes.size() << " parts, " << assembly.graph.edges.size()
             << " dockings of " << path << ": " << assembly.mesh.number_of_vertices() << " vertices, "
@@ -184,7 +197,8 @@ int run_assemble(const Args& args, Context& context)
   std::cout << "  iterations        " << assembly.report.iterations
             << (assembly.report.converged ? " (converged)" : " (not converged: iteration cap)") << "\n"
             << "  residual energy   " << format_number(assembly.residual_energy, 6) << " ("
-            << format_number(assembly.energy_per_part(), 6) << " per part)\n"
+            << format_number(assembly.energy_per_part(), 6) << " per part; the training example's graph: "
+            << format_number(reference, 3) << ")\n"
             << "  time              set-up " << format_number(assembly.setup_ms) << " ms, solve "
             << format_number(assembly.solve_ms) << " ms\n";
   Table table({"node", "type", "energy"}, {true, false, true});
@@ -195,7 +209,7 @@ int run_assemble(const Args& args, Context& context)
   table.print(std::cout);
   std::cout << "Wrote " << output << "\n";
   if(args.has("save-graph")) std::cout << "Wrote " << args.text("save-graph") << "\n";
-  return exit_ok;
+  return status;
 }
 
 } // namespace
@@ -212,7 +226,7 @@ Command make_graph_command()
                 "training example in the part-graph format (doc/MPM/Part_graphs.md).\n") + grammar_text;
   c.min_positionals = c.max_positionals = 1;
   c.options = {
-    {"output", 'o', Value_kind::text, "G.json", "", "part graph file to write (required)"},
+    {"output", 'o', Value_kind::output_file, "G.json", "", "part graph file to write (required)"},
     {"example", 0, Value_kind::integer, "N", "0", "training example", 0, INT_MAX},
     {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition rules)"},
   };
@@ -235,12 +249,15 @@ Command make_assemble_command()
       "is when the edit applies): seam vertices are shared, each part starts at its\n"
       "type's mean plus its coordinates placed rigidly on its neighbours, and the\n"
       "embedding solver minimizes the distortion. Prints the residual energy (total,\n"
-      "per part, per node). OUT is .off, .obj, .ply or .stl (PLY: per-face colours by type).\n") +
+      "per part, per node). OUT is .off, .obj, .ply or .stl (PLY: per-face colours by type).\n"
+      "An embedding that stops at the iteration cap, or whose energy per part is over\n"
+      "1000 times that of the training example's graph (a cycle that cannot close),\n"
+      "is written with a warning and exit status 3.\n") +
     grammar_text;
   c.min_positionals = c.max_positionals = 1;
   c.options = {
-    {"output", 'o', Value_kind::text, "OUT", "", "mesh to write: .off, .obj, .ply or .stl (required)"},
-    {"graph", 0, Value_kind::text, "G.json", "", "part graph file (default: the training example's)"},
+    {"output", 'o', Value_kind::output_file, "OUT", "", "mesh to write: .off, .obj, .ply or .stl (required)"},
+    {"graph", 0, Value_kind::input_file, "G.json", "", "part graph file (default: the training example's)"},
     {"example", 0, Value_kind::integer, "N", "0", "training example whose graph is used without --graph", 0, INT_MAX},
     {"insert", 0, Value_kind::text, "EDGE", "", "insert a segment into docking EDGE", -HUGE_VAL, HUGE_VAL, false, true},
     {"remove-segment", 0, Value_kind::text, "NODE", "", "remove a two-docking segment, reconnecting its neighbours",
@@ -251,7 +268,7 @@ Command make_assemble_command()
      "copy the branch at NODE and dock it at a free site of TARGET", -HUGE_VAL, HUGE_VAL, false, true},
     {"close", 0, Value_kind::text, "A:B", "", "dock nodes A and B at free sites (close a cycle)", -HUGE_VAL,
      HUGE_VAL, false, true},
-    {"save-graph", 0, Value_kind::text, "G2.json", "", "also write the edited part graph"},
+    {"save-graph", 0, Value_kind::output_file, "G2.json", "", "also write the edited part graph"},
     {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition rules)"},
     {"iterations", 0, Value_kind::integer, "N", std::to_string(defaults.max_iterations),
      "maximum number of solver iterations", 1, INT_MAX},

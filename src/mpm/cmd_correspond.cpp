@@ -5,6 +5,7 @@
 // puts the same-type parts of a labelled mesh in dense correspondence and
 // writes every part with its type's template connectivity, for inspection.
 #include "cli.h"
+#include "standard_streams.h"
 
 #include <CGAL/MPM/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
@@ -68,6 +69,7 @@ int run_correspond(const Args& args, Context& context)
   Training_input input;
   context.progress.update("reading " + mesh_path, 0.);
   input.mesh = read_labeled_mesh(mesh_path, labels, &warnings);
+  input.mesh.source = as_the_user_wrote(input.mesh.source); // `-`, not its temporary copy
   for(const std::string& w : warnings) context.progress.warning(w);
   validate_labeled_mesh(input.mesh);
   input.annotation = read_annotation(annotation_path);
@@ -178,9 +180,9 @@ Command make_correspond_command()
   c.min_positionals = 1;
   c.max_positionals = 1;
   c.options = {
-    {"output", 'o', Value_kind::text, "OUTDIR_OR_PREFIX", "", "output directory (existing or ending in /) or prefix (required)"},
-    {"labels", 0, Value_kind::text, "SEG", "MESH.seg if present, else components", "part labels of MESH"},
-    {"annotation", 0, Value_kind::text, "JSON", "MESH.json if present", "annotation naming the part types"},
+    {"output", 'o', Value_kind::output_prefix, "OUTDIR_OR_PREFIX", "", "output directory (existing or ending in /) or prefix (required)"},
+    {"labels", 0, Value_kind::input_file, "SEG", "MESH.seg if present, else components", "part labels of MESH"},
+    {"annotation", 0, Value_kind::input_file, "JSON", "MESH.json if present", "annotation naming the part types"},
     {"no-refine", 0, Value_kind::flag, "", "", "skip the refinement (trace(Sigma) minimization)"},
     {"refinement-iterations", 0, Value_kind::integer, "N", "40", "gradient steps of the refinement", 0, INT_MAX},
   };

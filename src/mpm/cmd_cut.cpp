@@ -128,8 +128,8 @@ Command make_cut_command()
     "PREFIX.seg (one part label per face), the input 'mpm learn' reads.";
   c.min_positionals = c.max_positionals = 1;
   c.options = {
-    {"output", 'o', Value_kind::text, "PREFIX", "", "output prefix (required; a trailing .off or .seg is dropped)"},
-    {"cuts", 0, Value_kind::text, "CUTS", "", "cut file (required)"},
+    {"output", 'o', Value_kind::output_prefix, "PREFIX", "", "output prefix (required; a trailing .off or .seg is dropped)"},
+    {"cuts", 0, Value_kind::input_file, "CUTS", "", "cut file (required)"},
     {"feature-weight", 0, Value_kind::real, "W", "1",
      "how strongly cuts snap to concave creases; 0 = shortest edge paths", 0, HUGE_VAL},
     {"open", 0, Value_kind::flag, "", "closed loops",

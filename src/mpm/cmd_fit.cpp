@@ -7,6 +7,7 @@
 // `-o FILE` writes the fitted surface. `mpm fit --leave-one-out MESH ...`
 // learns from all meshes but one, fits that one, and does so for each.
 #include "cli.h"
+#include "standard_streams.h"
 #include "mesh_files.h"
 
 #include <CGAL/MPM/Annotation_io.h>
@@ -34,6 +35,7 @@ Training_input read_input(const Mesh_files& files, Context& context, std::vector
   context.progress.update("reading " + files.mesh, 0.);
   std::vector<std::string> read_warnings;
   input.mesh = read_labeled_mesh(files.mesh, files.labels, &read_warnings);
+  input.mesh.source = as_the_user_wrote(input.mesh.source); // `-`, not its temporary copy
   for(const std::string& w : read_warnings)
   {
     warnings.push_back(w);
@@ -142,7 +144,8 @@ void print_fit(std::ostream& out, const Morphable_part_model& model, const Model
   for(const Skipped_segment& s : fit.skipped) out << "  skipped: " << s.reason << "\n";
 }
 
-void write_fitted_surface(const Morphable_part_model& model, const Model_fit& fit, const std::string& path)
+void write_fitted_surface(const Morphable_part_model& model, const Model_fit& fit, const std::string& path,
+                          const Mesh_write_options& options)
 {
   const Labeled_mesh surface = fit.fitted_surface(model);
   Eigen::Matrix<unsigned char, Eigen::Dynamic, 3> colors(surface.mesh.number_of_faces(), 3);
@@ -154,7 +157,7 @@ void write_fitted_surface(const Morphable_part_model& model, const Model_fit& fi
       colors.row(face) << c[0], c[1], c[2];
     }
   ensure_parent_directory(path);
-  write_mesh_file(surface.mesh, path, &colors);
+  write_mesh_file(surface.mesh, path, &colors, options);
 }
 
 Model_fit_options fit_options(const Args& args, Context& context, std::vector<std::string>& warnings)
@@ -191,7 +194,7 @@ int run_fit_model(const Args& args, Context& context)
   if(!output.empty())
   {
     context.progress.update("writing " + output, 0.);
-    write_fitted_surface(model, fit, output);
+    write_fitted_surface(model, fit, output, context.meshes);
   }
   context.progress.done();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -329,7 +332,7 @@ Command make_fit_command()
   c.min_positionals = 1;
   c.max_positionals = -1;
   c.options = {
-    {"output", 'o', Value_kind::text, "FITTED", "none", "write the fitted surface (OFF, OBJ or PLY)"},
+    {"output", 'o', Value_kind::output_file, "FITTED", "none", "write the fitted surface (OFF, OBJ, PLY or STL)"},
     {"segment", 0, Value_kind::integer, "LABEL", "every segment", "fit only this segment (repeatable)", 0, INT_MAX,
      false, true},
     {"skip-unfittable", 0, Value_kind::flag, "", "", "list segments that cannot be fitted instead of failing"},

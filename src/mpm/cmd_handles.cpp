@@ -89,10 +89,10 @@ Command make_handles_command()
     "the rest positions. The file format is doc/MPM/Handles.md.";
   c.min_positionals = c.max_positionals = 1;
   c.options = {
-    {"output", 'o', Value_kind::text, "H.json", "", "handle file to write (required)"},
+    {"output", 'o', Value_kind::output_file, "H.json", "", "handle file to write (required)"},
     {"per-part", 0, Value_kind::integer, "K", "none", "handles per part (1 or 2)", 1, 2},
     {"farthest", 0, Value_kind::integer, "N", "none", "handles by farthest-point sampling", 1, INT_MAX},
-    {"targets", 0, Value_kind::text, "POSE.off", "none: rest positions", "pose giving the targets"},
+    {"targets", 0, Value_kind::input_file, "POSE.off", "none: rest positions", "pose giving the targets"},
     {"example", 0, Value_kind::integer, "N", "0", "training example", 0, INT_MAX},
   };
   c.run = run_handles;

@@ -6,6 +6,7 @@
 // Meshes without an annotation whose segments are not in known
 // correspondence (real segmentations) get proposed part types first.
 #include "cli.h"
+#include "standard_streams.h"
 #include "mesh_files.h"
 
 #include <CGAL/MPM/Annotation_io.h>
@@ -154,6 +155,7 @@ int run_learn(const Args& args, Context& context)
     Training_input input;
     std::vector<std::string> read_warnings;
     input.mesh = read_labeled_mesh(f.mesh, f.labels, &read_warnings);
+    input.mesh.source = as_the_user_wrote(input.mesh.source); // `-`, not its temporary copy
     for(const std::string& w : read_warnings) warn(w);
     validate_labeled_mesh(input.mesh);
     if(!f.annotation.empty())
@@ -239,8 +241,8 @@ Command make_learn_command()
   c.min_positionals = 1;
   c.max_positionals = -1;
   c.options = {
-    {"output", 'o', Value_kind::text, "MODEL", "", "model file to write (required)"},
-    {"write-annotation", 0, Value_kind::text, "FILE", "none",
+    {"output", 'o', Value_kind::output_file, "MODEL", "", "model file to write (required)"},
+    {"write-annotation", 0, Value_kind::output_file, "FILE", "none",
      "write the part types proposed for the preceding MESH as an annotation", -HUGE_VAL, HUGE_VAL, false, true},
     {"modes", 0, Value_kind::integer, "N", "annotation's, else 0 = by explained variance",
      "modes kept per shape space", 0, INT_MAX},

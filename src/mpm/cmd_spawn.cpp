@@ -110,7 +110,7 @@ Command make_spawn_command()
     {"seed", 0, Value_kind::integer, "S", "1", "seed of the random draws", 0, double(UINT_MAX)},
     {"edits", 0, Value_kind::integer, "K", "3", "most random edits per graph", 1, 1000},
     {"example", 0, Value_kind::integer, "N", "0", "training example to start from", 0, INT_MAX},
-    {"output", 'o', Value_kind::text, "DIR", "", "directory for the meshes and graphs"},
+    {"output", 'o', Value_kind::output_prefix, "DIR", "", "directory for the meshes and graphs"},
     {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition rules)"},
     {"iterations", 0, Value_kind::integer, "N", std::to_string(defaults.max_iterations),
      "maximum number of solver iterations", 1, INT_MAX},

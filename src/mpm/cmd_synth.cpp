@@ -127,7 +127,7 @@ Command make_synth_command()
     "(annotation: part type per label, model parameters); creates PREFIX's directory.";
   c.min_positionals = c.max_positionals = 1;
   c.options = {
-    {"output", 'o', Value_kind::text, "PREFIX", "", "output prefix (required)"},
+    {"output", 'o', Value_kind::output_prefix, "PREFIX", "", "output prefix (required)"},
     {"seed", 0, Value_kind::integer, "N", "1", "seed of the training model's latent parameters", 0, UINT_MAX},
     {"vertices", 0, Value_kind::integer, "N", "0 = the family's default",
      "approximate number of vertices", 0, INT_MAX},
@@ -135,6 +135,7 @@ Command make_synth_command()
      "draw a held-out pose from this seed instead", 0, UINT_MAX},
   };
   c.prefix_extensions = {".off", ".seg", ".json"};
+  c.positionals_are_files = false;
   c.run = run_synth;
   return c;
 }

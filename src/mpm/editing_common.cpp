@@ -260,11 +260,11 @@ Command make_editing_command(const Editing_command& editing)
   c.min_positionals = c.max_positionals = 1;
   c.options = editing.options;
   const std::vector<Option_spec> shared = {
-    {"output", 'o', Value_kind::text, "OUT", "", "mesh to write: .off, .obj, .ply or .stl (required)"},
+    {"output", 'o', Value_kind::output_file, "OUT", "", "mesh to write: .off, .obj, .ply or .stl (required)"},
     {"example", 0, Value_kind::integer, "N", "0", "training example to edit", 0, INT_MAX},
-    {"mesh", 0, Value_kind::text, "M.off", "none",
+    {"mesh", 0, Value_kind::input_file, "M.off", "none",
      "another pose of the example's mesh (same triangles) to start from"},
-    {"handles", 0, Value_kind::text, "H.json", handles_required ? "" : "none",
+    {"handles", 0, Value_kind::input_file, "H.json", handles_required ? "" : "none",
      handles_required ? "handle file (required)" : "handle file"},
     {"iterations", 0, Value_kind::integer, "N", std::to_string(defaults.max_iterations),
      "maximum number of solver iterations", 1, INT_MAX},

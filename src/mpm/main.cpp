@@ -4,6 +4,7 @@
 // `mpm`: the command-line tool of CGAL-MPM. Dispatches to the subcommands in
 // the table below; each lives in its own cmd_NAME.cpp.
 #include "cli.h"
+#include "standard_streams.h"
 
 #include <CGAL/MPM/internal/Atomic_file.h>
 
@@ -67,8 +68,11 @@ std::string general_usage()
   for(const mpm::Command& c : all_commands()) width = std::max(width, c.name.size());
   for(const mpm::Command& c : all_commands())
     s << "  " << c.name << std::string(width - c.name.size() + 2, ' ') << c.summary << "\n";
-  s << "\nEvery command takes --json (one JSON object on stdout), --progress and --help.\n"
-       "Exit status: 0 success, 1 input or computation error, 2 usage error.\n"
+  s << "\nEvery command takes --json (one JSON object on stdout), --progress, --binary (PLY and STL\n"
+       "meshes written in binary) and --help. A single input or output file may be '-'\n"
+       "(standard input or output; meshes written there are OFF).\n"
+       "Exit status: 0 success, 1 input or computation error, 2 usage error,\n"
+       "3 result written with a warning.\n"
        "Manual: doc/MPM/Command_line.md\n";
   return s.str();
 }
@@ -76,7 +80,7 @@ std::string general_usage()
 int fail(int code, const std::string& message)
 {
   std::cout.flush();
-  std::string line = message; // always one line
+  std::string line = mpm::as_the_user_wrote(message); // always one line
   for(char& ch : line)
     if(ch == '\n' || ch == '\r') ch = ' ';
   std::fprintf(stderr, "mpm: error: %s\n", line.c_str());
@@ -118,14 +122,17 @@ int dispatch(const std::vector<std::string>& argv)
     std::cout << mpm::usage_text(command);
     return mpm::exit_ok;
   }
-  const mpm::Args args = mpm::parse_arguments(command, rest);
+  mpm::Args args = mpm::parse_arguments(command, rest);
+  CGAL::MPM::internal::remove_temporary_files_on_signals();
+  mpm::Standard_streams standard_streams(command, args, args.flag("json"));
   mpm::check_output_prefix(command, args);
   mpm::refuse_outputs_over_inputs(command, args);
   CGAL::MPM::internal::guard_inputs_against_overwriting(true);
-  CGAL::MPM::internal::remove_temporary_files_on_signals();
   mpm::Progress progress(command.name, args.flag("progress"));
   mpm::Context context{command.name, args.flag("json"), progress, CGAL::MPM::Mesh_write_options{args.flag("binary")}};
-  return command.run(args, context);
+  const int status = command.run(args, context);
+  if(status == mpm::exit_ok || status == mpm::exit_warning) standard_streams.send_output();
+  return status;
 }
 
 } // namespace

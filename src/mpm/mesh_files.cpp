@@ -51,9 +51,9 @@ std::vector<Option_spec> mesh_file_options()
 {
   const double none = std::numeric_limits<double>::infinity();
   return {
-    {"labels", 0, Value_kind::text, "SEG", "MESH.seg if present, else components", "part labels of the preceding MESH",
+    {"labels", 0, Value_kind::input_file, "SEG", "MESH.seg if present, else components", "part labels of the preceding MESH",
      -none, none, false, true},
-    {"annotation", 0, Value_kind::text, "JSON", "MESH.json if present, else none", "annotation of the preceding MESH",
+    {"annotation", 0, Value_kind::input_file, "JSON", "MESH.json if present, else none", "annotation of the preceding MESH",
      -none, none, false, true},
   };
 }

@@ -46,12 +46,14 @@ inline std::string quote(const std::string& s)
 }
 
 // Runs `mpm ARGS` (ARGS already shell-quoted where needed) with its output
-// captured in files of `where`.
-inline Run_result run_tool(const std::filesystem::path& where, const std::string& arguments)
+// captured in files of `where`, standard input read from `input` and
+// `environment` (`NAME=value ...`, quoted) set.
+inline Run_result run_tool(const std::filesystem::path& where, const std::string& arguments,
+                           const std::string& input = "/dev/null", const std::string& environment = "")
 {
   const std::filesystem::path out = where / "stdout.txt", err = where / "stderr.txt";
-  const std::string command = quote(MPM_TOOL_PATH) + " " + arguments + " >" + quote(out.string()) + " 2>" +
-                              quote(err.string()) + " </dev/null";
+  const std::string command = environment + " " + quote(MPM_TOOL_PATH) + " " + arguments + " >" +
+                              quote(out.string()) + " 2>" + quote(err.string()) + " <" + quote(input);
   const int raw = std::system(command.c_str());
   Run_result r;
   r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;

@@ -505,4 +505,45 @@ TEST_F(Cli, AssembleAndSpawnProgressAdvanceThroughTheirWork)
   EXPECT_TRUE(std::is_sorted(spawning.begin(), spawning.end())) << spawn.err;
 }
 
+// A graph whose cycle cannot close is still written, but with a warning
+// naming the cause and exit status 3; the open row it was made from is not.
+TEST_F(Cli, DoubtfulAssemblyIsWrittenWithAWarningAndStatusThree)
+{
+  const std::string t = path("grid");
+  ASSERT_EQ(run("synth hexa-grid --vertices 2000 -o " + quote(t)).status, 0);
+  ASSERT_EQ(run("learn " + quote(t + ".off") + " -o " + quote(path("g.mpm"))).status, 0);
+  ASSERT_EQ(run("graph " + quote(path("g.mpm")) + " -o " + quote(path("g.json"))).status, 0);
+  json row = json::parse(slurp(path("g.json")));
+  row["nodes"].erase(row["nodes"].begin() + 3, row["nodes"].end());
+  json edges = json::array();
+  for(const json& e : row["edges"])
+    if(e["first"].get<int>() < 3 && e["second"].get<int>() < 3) edges.push_back(e);
+  ASSERT_EQ(edges.size(), 2u);
+  row["edges"] = edges;
+  std::ofstream(path("row.json")) << row.dump(2);
+
+  const Run_result open = run("assemble " + quote(path("g.mpm")) + " --graph " + quote(path("row.json")) +
+                              " -o " + quote(path("open.off")) + " --json");
+  ASSERT_EQ(open.status, 0) << open.err;
+  EXPECT_TRUE(one_object(open)["warnings"].empty());
+
+  const Run_result closed = run("assemble " + quote(path("g.mpm")) + " --graph " + quote(path("row.json")) +
+                                " --close 0:2 -o " + quote(path("closed.off")) + " --json");
+  EXPECT_EQ(closed.status, 3) << closed.err;
+  const json s = one_object(closed);
+  EXPECT_GT(s["energy_per_part"].get<double>(), 1e3 * s["training_energy_per_part"].get<double>());
+  ASSERT_EQ(s["warnings"].size(), 1u) << s["warnings"];
+  const std::string warning = s["warnings"][0];
+  EXPECT_NE(warning.find("times that of the training example's graph"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("--close 0:2"), std::string::npos) << warning;
+  EXPECT_NE(closed.err.find("mpm: warning: " + warning), std::string::npos) << closed.err;
+  EXPECT_EQ(off_counts(path("closed.off")).first, s["vertices"].get<long>());
+
+  // Stopped at the iteration cap: a warning of its own.
+  const Run_result capped = run("assemble " + quote(path("g.mpm")) + " --graph " + quote(path("row.json")) +
+                                " --iterations 1 -o " + quote(path("capped.off")) + " --json");
+  EXPECT_EQ(capped.status, 3) << capped.err;
+  EXPECT_NE(one_object(capped)["warnings"][0].get<std::string>().find("iteration cap (1)"), std::string::npos);
+}
+
 } // namespace

@@ -410,3 +410,78 @@ TEST_F(Cli_editing, HandlesPerPartFromAPoseDriveADeformationTowardIt)
   expect_error(run("handles " + quote(model()) + " --per-part 1 --farthest 3 -o " + quote(path("x.json"))), 2,
                {"--per-part"});
 }
+
+namespace {
+
+// `-` stands for one input file (standard input) and one output file
+// (standard output); the result is the same bytes as with named files, and
+// messages name `-`, never the temporary copies.
+TEST_F(Cli_editing, DashReadsStandardInputAndWritesStandardOutput)
+{
+  const std::string h = handles("pull.json", {{0, {0., 0., 0.}}, {1900, {0.2, 0., 0.}}});
+  const std::string tmp = path("tmp");
+  fs::create_directories(tmp);
+  const std::string env = "TMPDIR=" + quote(tmp);
+  const auto run_piped = [&](const std::string& arguments, const std::string& input) {
+    return mpm_test::run_tool(dir, arguments, input, env);
+  };
+
+  ASSERT_EQ(run("deform " + quote(model()) + " --handles " + quote(h) + " -o " + quote(path("named.off"))).status, 0);
+  const Run_result piped = run_piped("deform " + quote(model()) + " --handles - -o -", h);
+  ASSERT_EQ(piped.status, 0) << piped.err;
+  EXPECT_EQ(piped.out, slurp(path("named.off")));
+  EXPECT_NE(piped.err.find("handles           2 (-)"), std::string::npos) << piped.err;
+  EXPECT_NE(piped.err.find("Wrote -"), std::string::npos) << piped.err;
+
+  // A mesh on standard input is recognized by its content.
+  const Run_result learned = run_piped("learn - -o " + quote(path("again.mpm")) + " --json", input_mesh());
+  ASSERT_EQ(learned.status, 0) << learned.err;
+  EXPECT_EQ(one_object(learned)["examples"][0]["name"], "-");
+  const Run_result info = run_piped("info - --json", model());
+  ASSERT_EQ(info.status, 0) << info.err;
+  EXPECT_EQ(one_object(info)["model"], "-");
+  const Run_result graph = run_piped("graph " + quote(model()) + " -o -", "/dev/null");
+  ASSERT_EQ(graph.status, 0) << graph.err;
+  EXPECT_EQ(json::parse(graph.out)["format"], "cgal-mpm-part-graph");
+
+  expect_error(run_piped("info -", h), 1, {"mpm: error: -: "});
+  expect_error(run_piped("deform " + quote(model()) + " --handles " + quote(h) + " -o - --json", "/dev/null"), 2,
+               {"--json both write to standard output"});
+  expect_error(run_piped("synth hand -o -", "/dev/null"), 2, {"cannot stand for the several files"});
+  expect_error(run_piped("deform - --handles - -o " + quote(path("x.off")), h), 2,
+               {"only one input can be read from standard input"});
+  EXPECT_TRUE(fs::is_empty(tmp)) << "temporary copies were left in " << tmp;
+}
+
+// compare's progress advances through ARAP's iterations (it sat at one
+// percentage for the whole run) and ends at 100%.
+TEST_F(Cli_editing, CompareProgressAdvancesThroughArapIterations)
+{
+  const std::string h = handles("pull.json", {{0, {0., 0., 0.}}, {1900, {0.3, 0., 0.}}});
+  const Run_result r = run("compare " + quote(model()) + " --handles " + quote(h) +
+                           " --methods arap --arap-iterations 200 --progress");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<int> arap;
+  for(const std::string& l : r.err_lines())
+    if(l.rfind("mpm compare: running arap ", 0) == 0) arap.push_back(std::stoi(l.substr(l.rfind(' ') + 1)));
+  EXPECT_GE(std::set<int>(arap.begin(), arap.end()).size(), 3u) << r.err;
+  EXPECT_TRUE(std::is_sorted(arap.begin(), arap.end())) << r.err;
+  ASSERT_FALSE(arap.empty());
+  EXPECT_EQ(arap.back(), 100) << r.err;
+}
+
+TEST_F(Cli_editing, FitWritesBinaryMeshes)
+{
+  const std::string fit = "fit " + quote(model()) + " " + quote(input_mesh());
+  const Run_result binary = run(fit + " --binary -o " + quote(path("fitted.ply")));
+  ASSERT_EQ(binary.status, 0) << binary.err;
+  ASSERT_EQ(run(fit + " -o " + quote(path("fitted.off"))).status, 0);
+  const std::string ply = slurp(path("fitted.ply"));
+  EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u) << ply.substr(0, 80);
+  const Point_matrix text = CGAL::MPM::read_mesh_file(path("fitted.off")).mesh.points;
+  const Point_matrix read = CGAL::MPM::read_mesh_file(path("fitted.ply")).mesh.points;
+  ASSERT_EQ(read.rows(), text.rows());
+  EXPECT_LT(max_distance(read, text), 1e-5 * diagonal(text)); // the OFF text rounds
+}
+
+} // namespace

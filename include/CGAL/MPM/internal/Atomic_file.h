@@ -35,6 +35,11 @@ void guard_inputs_against_overwriting(bool guard);
 // then end the process as the signal would have.
 void remove_temporary_files_on_signals();
 
+// Another file for those signals to remove (a copy of standard input, say);
+// returns its slot for forget_on_signals(), or -1 when all slots are taken.
+int remove_on_signals(const std::string& path);
+void forget_on_signals(int slot);
+
 // Whole content of a file; throws Input_error naming `path` when it cannot be read.
 std::string read_file(const std::string& path);
 
