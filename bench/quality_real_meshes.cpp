@@ -146,13 +146,26 @@ void set_tip_handles(const Morphable_part_model& model, const Embedding_problem&
 
 // A segment inserted before the tip of every chain (the edge from a tip
 // to its neighbour): how many insertions gave one closed surface, the
-// largest residual energy per part among them, and why any failed.
+// largest residual energy per part among them, how many faces of an
+// inserted segment cross another part (one lying on top of an existing
+// segment crosses it everywhere), and why any failed.
 struct Insertions
 {
   int tried = 0, closed = 0;
   double worst_energy_per_part = 0.;
+  int crossings = 0;
   std::string failure;
 };
+
+// Intersecting face pairs of which exactly one face is `node`'s.
+int crossings_of_node(const Assembly& a, int node)
+{
+  std::vector<std::pair<int, int>> pairs;
+  self_intersecting_faces(a.mesh, pairs);
+  return int(std::count_if(pairs.begin(), pairs.end(), [&](const std::pair<int, int>& p) {
+    return (a.face_nodes[std::size_t(p.first)] == node) != (a.face_nodes[std::size_t(p.second)] == node);
+  }));
+}
 
 Insertions insert_into_every_chain(Morphable_part_model model)
 {
@@ -172,10 +185,11 @@ Insertions insert_into_every_chain(Morphable_part_model model)
     try
     {
       Part_graph graph = example;
-      insert_segment(model, graph, int(k));
+      const int inserted = insert_segment(model, graph, int(k));
       const Assembly a = assemble(model, graph);
       const Surface_soundness s = check_surface(a.mesh);
       if(s.components == 1 && s.border_edges == 0 && s.non_manifold_edges == 0) ++r.closed;
+      r.crossings += crossings_of_node(a, inserted);
       r.worst_energy_per_part = std::max(r.worst_energy_per_part, a.energy_per_part());
     }
     catch(const std::exception& error)
@@ -211,9 +225,9 @@ int main(int argc, char** argv)
       if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | folded faces | new self-int. | Hausdorff % | "
-               "insertions closed / tried (largest energy per part) | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | new inverted in part (rest folds unfolded) | new self-int. | "
+               "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | new inverted in part (rest folds unfolded) | new self-int. | "
                "worst length change (parts out of range) |\n"
-               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
   {
     try
@@ -242,7 +256,7 @@ int main(int argc, char** argv)
            << std::max(0, rest.self_intersections - std::max(0, input_soundness.self_intersections)) << " | "
            << std::setprecision(2) << 100. * relative_hausdorff_distance(ex.mesh, input.mesh.mesh) << " | "
            << inserted.closed << " / " << inserted.tried << " (" << std::setprecision(2)
-           << inserted.worst_energy_per_part << ") | ";
+           << inserted.worst_energy_per_part << ") | " << inserted.crossings << " | ";
       if(!inserted.failure.empty()) std::cerr << name << ": an insertion failed: " << inserted.failure << "\n";
       struct Edit
       {
@@ -258,7 +272,7 @@ int main(int argc, char** argv)
       {
         Embedding_solver solver(e.problem);
         if(e.drag) set_tip_handles(model, e.problem, solver);
-        std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | | ") << e.name << " | "
+        std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | | | ") << e.name << " | "
                   << edit_cells(evaluate(model, e.problem, solver, rest, folded)) << " |\n"
                   << std::flush;
       }

@@ -89,6 +89,19 @@ Mesh surface_mesh_of(const Indexed_mesh& m)
 
 } // namespace
 
+bool self_intersecting_faces(const Indexed_mesh& mesh, std::vector<std::pair<int, int>>& pairs)
+{
+  pairs.clear();
+  const std::vector<std::vector<std::size_t>> faces = faces_of(mesh);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(faces)) return false;
+  Mesh sm;
+  PMP::polygon_soup_to_polygon_mesh(points_of(mesh), faces, sm); // faces keep their order
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> found;
+  PMP::self_intersections(sm, std::back_inserter(found));
+  for(const auto& [f, g] : found) pairs.emplace_back(int(f), int(g));
+  return true;
+}
+
 Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference,
                                 const std::vector<int>* face_groups)
 {
@@ -102,18 +115,9 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
     s.border_edges += c == 1;
     s.non_manifold_edges += c > 2;
   }
+  std::vector<std::pair<int, int>> pairs;
+  s.self_intersections = self_intersecting_faces(mesh, pairs) ? static_cast<int>(pairs.size()) : -1;
   const std::vector<Point_3> points = points_of(mesh);
-  const std::vector<std::vector<std::size_t>> faces = faces_of(mesh);
-  if(PMP::is_polygon_soup_a_polygon_mesh(faces))
-  {
-    Mesh sm;
-    PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
-    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
-    PMP::self_intersections(sm, std::back_inserter(pairs));
-    s.self_intersections = static_cast<int>(pairs.size());
-  }
-  else
-    s.self_intersections = -1;
   for(const Triangle& t : mesh.triangles)
     s.degenerate_faces += CGAL::collinear(points[t[0]], points[t[1]], points[t[2]]);
   if(reference && reference->triangles == mesh.triangles)

@@ -5,6 +5,7 @@
 
 #include <CGAL/MPM/Indexed_mesh.h>
 
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -41,6 +42,13 @@ struct Surface_soundness
 /// `Training_example::face_labels`; without it the mesh is one group).
 Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* reference = nullptr,
                                 const std::vector<int>* face_groups = nullptr);
+
+/// \ingroup PkgMPMRef
+/// The pairs of intersecting faces of `mesh` (face indices, CGAL's
+/// `self_intersections`), what `Surface_soundness::self_intersections`
+/// counts. Returns false, with `pairs` empty, when the faces do not form a
+/// polygon mesh (non-manifold or inconsistently oriented).
+bool self_intersecting_faces(const Indexed_mesh& mesh, std::vector<std::pair<int, int>>& pairs);
 
 /// \ingroup PkgMPMRef
 /// The faces of `mesh` turned inside out against `reference` (the same
