@@ -11,6 +11,7 @@
 #include <CGAL/MPM/Part_colors.h>
 #include <CGAL/MPM/Part_graph_editing.h>
 #include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Part_type_proposal.h>
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
@@ -205,7 +206,10 @@ void Session::load_labeled_mesh(const std::string& mesh, const std::string& labe
 {
   const MPM::Labeled_mesh labeled = MPM::read_labeled_mesh(mesh, labels);
   MPM::validate_labeled_mesh(labeled);
-  const MPM::Annotation a = annotation.empty() ? MPM::Annotation() : MPM::read_annotation(annotation);
+  // Without an annotation a real segmentation gets the types `mpm learn` proposes.
+  MPM::Annotation a;
+  if(!annotation.empty()) a = MPM::read_annotation(annotation);
+  else if(MPM::part_types_need_proposing({labeled})) a = MPM::propose_part_types(labeled).annotation;
   adopt_model(MPM::learn_morphable_part_model(labeled, a), QString::fromStdString(mesh));
 }
 

@@ -457,5 +457,14 @@ bool segments_share_connectivity(const std::vector<Labeled_mesh>& meshes)
   return false;
 }
 
+bool part_types_need_proposing(const std::vector<Labeled_mesh>& meshes)
+{
+  const bool several_segments = std::any_of(meshes.begin(), meshes.end(), [](const Labeled_mesh& m) {
+    const std::vector<int>& l = m.face_labels;
+    return std::any_of(l.begin(), l.end(), [&](int x) { return x != l.front(); });
+  });
+  return several_segments && !segments_share_connectivity(meshes);
+}
+
 } // namespace MPM
 } // namespace CGAL

@@ -66,17 +66,14 @@ std::vector<CGAL::MPM::Part_type_proposal> propose_missing_types(std::vector<Mes
   using namespace CGAL::MPM;
   std::vector<std::size_t> bare;
   std::vector<Labeled_mesh> meshes;
-  bool several_segments = false;
   for(std::size_t i = 0; i < files.size(); ++i)
     if(inputs[i].annotation.part_type_of_label.empty())
     {
       bare.push_back(i);
       meshes.push_back(inputs[i].mesh);
-      const auto& l = meshes.back().face_labels;
-      several_segments |= std::any_of(l.begin(), l.end(), [&](int x) { return x != l.front(); });
     }
   std::vector<Part_type_proposal> proposals(files.size());
-  if(bare.empty() || !several_segments || segments_share_connectivity(meshes)) return proposals;
+  if(bare.empty() || !part_types_need_proposing(meshes)) return proposals;
   std::vector<Part_type_proposal> made = propose_part_types(meshes);
   for(std::size_t k = 0; k < bare.size(); ++k)
   {

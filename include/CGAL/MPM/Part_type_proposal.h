@@ -136,6 +136,15 @@ void validate_seam_counts(const std::vector<Training_input>& inputs);
 /// none: their segments need proposed types and dense correspondence.
 bool segments_share_connectivity(const std::vector<Labeled_mesh>& meshes);
 
+/// \ingroup PkgMPMRef
+/// Whether meshes given without an annotation get proposed part types
+/// (`propose_part_types()`) before learning: some mesh has more than one
+/// segment and no two segments share connectivity
+/// (`segments_share_connectivity()`), so the learner's grouping by
+/// connectivity would give every segment a type of its own. What `mpm
+/// learn` and the demo decide.
+bool part_types_need_proposing(const std::vector<Labeled_mesh>& meshes);
+
 } // namespace MPM
 } // namespace CGAL
 
