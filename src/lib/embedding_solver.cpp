@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/internal/Rotation_lbfgs.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Shape_space.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
@@ -10,6 +11,7 @@
 #include <CGAL/Weights/utils.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_MPM_HAS_CHOLMOD
@@ -227,6 +229,10 @@ struct Embedding_solver::Impl
   void local_step();
   Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
   void reduced_local_step();
+  Eigen::VectorXd rotation_gradient() const;
+  double settle_at_rotations();
+  double quasi_newton_improve(internal::Rotation_lbfgs& lbfgs, const std::vector<Eigen::Matrix3d>& start,
+                              double start_energy, Eigen::VectorXd& gradient, double energy);
   Eigen::VectorXd solve_coordinates() const;
   Eigen::MatrixXd positions_rhs(const Eigen::VectorXd& lambda) const;
   Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
@@ -867,6 +873,88 @@ void Embedding_solver::Impl::reduced_local_step()
   }
 }
 
+// The gradient of the reduced energy in the rotations, each in its own frame
+// (R_c exp([omega]x)). With the coordinates and positions optimal for the
+// rotations, only the explicit dependence counts: dE/dR_c = -2 C_c with C_c
+// the covariance of the rotation fit, whose skew part in R_c's frame is the
+// gradient.
+Eigen::VectorXd Embedding_solver::Impl::rotation_gradient() const
+{
+  const int nc = static_cast<int>(clusters.size());
+  Eigen::VectorXd g(3 * nc);
+  for(int c = 0; c < nc; ++c)
+  {
+    Eigen::Matrix3d covariance = w_blocks[std::size_t(nc) * nc + c].transpose();
+    for(int d = 0; d < nc; ++d) covariance += rotations[d] * w_blocks[std::size_t(d) * nc + c];
+    const Eigen::Matrix3d m = rotations[c].transpose() * covariance;
+    g.segment<3>(3 * c) = -2. * Eigen::Vector3d(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+  }
+  return g;
+}
+
+// Coordinates and implicit positions optimal for the current rotations; the
+// reduced energy there.
+double Embedding_solver::Impl::settle_at_rotations()
+{
+  Eigen::VectorXd lambda = solve_coordinates();
+  if(!lambda.allFinite()) check_finite(positions, lambda);
+  std::vector<Eigen::Matrix3d> w = w_of(lambda);
+  const double e = reduced_energy(lambda, w);
+  if(!std::isfinite(e)) fail_on_non_finite_energy(positions_from(lambda), lambda);
+  coordinates = std::move(lambda);
+  w_blocks = std::move(w);
+  implicit = true;
+  positions_valid = false;
+  return e;
+}
+
+// One step of L-BFGS on the rotations from a settled state of `energy` and
+// `gradient` (both updated). A step must lower the energy by a fraction of
+// what its slope promises (Armijo); where none does within a few halvings,
+// or before any curvature is known, the local/global step is taken instead,
+// which never raises the energy, and its pair seeds the memory.
+// After an iteration from the settled rotations `start` (energy
+// `start_energy`, gradient `gradient`) reached a state of `energy`: the
+// L-BFGS step on the rotations from `start` replaces it where it lowers the
+// energy more, and by a fraction of what its slope promises (Armijo). The
+// step kept feeds the quasi-Newton memory; `gradient` becomes the new state's.
+double Embedding_solver::Impl::quasi_newton_improve(internal::Rotation_lbfgs& lbfgs,
+                                                    const std::vector<Eigen::Matrix3d>& start, double start_energy,
+                                                    Eigen::VectorXd& gradient, double energy)
+{
+  double best = energy;
+  Eigen::VectorXd step = internal::rotation_step(start, rotations);
+  if(!lbfgs.empty())
+  {
+    const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
+    const Eigen::VectorXd kept_coordinates = coordinates;
+    const Eigen::VectorXd direction = lbfgs.direction(gradient);
+    const double slope = gradient.dot(direction);
+    bool better = false;
+    for(double t = 1.; slope < 0. && t > 1e-3 && !better; t *= 0.5)
+    {
+      rotations = internal::retract(start, t * direction);
+      const double e = settle_at_rotations();
+      better = e <= start_energy + 1e-4 * t * slope && e < best;
+      if(better)
+      {
+        best = e;
+        step = t * direction;
+      }
+    }
+    if(!better)
+    {
+      rotations = kept_rotations;
+      coordinates = kept_coordinates;
+      w_blocks = kept_w;
+    }
+  }
+  const Eigen::VectorXd g = rotation_gradient();
+  lbfgs.remember(step, g - gradient);
+  gradient = g;
+  return best;
+}
+
 const Point_matrix& Embedding_solver::Impl::materialized_positions()
 {
   if(!positions_valid)
@@ -1276,6 +1364,13 @@ Solve_report Embedding_solver::solve_from_current_state()
     return d.energy_of(d.positions, d.coordinates);
   };
 
+  // With implicit positions the rotations alone are the state: L-BFGS on
+  // them. Memory measured on the 36 real-mesh edits of quality_real_meshes:
+  // 3 pairs 8% more iterations than 8, 20 pairs 8% fewer.
+  const bool quasi_newton = reduced && d.options.quasi_newton;
+  internal::Rotation_lbfgs lbfgs(20);
+  Eigen::VectorXd gradient;
+
   Anderson_acceleration anderson(std::max(0, d.options.anderson_history));
   Eigen::VectorXd x = pack();
   const double rounding = 1e-9 * d.energy_unit();
@@ -1284,11 +1379,12 @@ Solve_report Embedding_solver::solve_from_current_state()
   for(int it = 0; it < d.options.max_iterations; ++it)
   {
     internal::throw_if_cancelled(d.options.cancel, "solve");
+    const std::vector<Eigen::Matrix3d> start = d.rotations;
     double e = iterate();
     const Eigen::VectorXd g = pack();
     const Eigen::VectorXd candidate = anderson.next(x, g);
     x = g;
-    if(candidate.size() == g.size() && candidate != g)
+    if(candidate != g)
     {
       const std::vector<Eigen::Matrix3d> plain_rotations = d.rotations;
       const std::vector<Eigen::Matrix3d> plain_w = d.w_blocks;
@@ -1296,8 +1392,10 @@ Solve_report Embedding_solver::solve_from_current_state()
       const double e_candidate = candidate.allFinite() ? evaluate(candidate) : std::numeric_limits<double>::infinity();
       if(e_candidate < e)
       {
+        // The combined coordinates are not the rotations' best: settling
+        // lowers the energy further and makes the gradient exact.
+        e = quasi_newton ? d.settle_at_rotations() : e_candidate;
         x = pack();
-        e = e_candidate;
       }
       else
       {
@@ -1308,6 +1406,14 @@ Solve_report Embedding_solver::solve_from_current_state()
         anderson.restart();
       }
     }
+    if(quasi_newton && it > 0)
+    {
+      const double improved = d.quasi_newton_improve(lbfgs, start, previous, gradient, e);
+      if(improved < e) x = pack();
+      e = improved;
+    }
+    else if(quasi_newton)
+      gradient = d.rotation_gradient();
     // Each step minimizes the energy over its block of unknowns, so a rise
     // beyond rounding means the numbers, not the model, went wrong.
     if(e > best + 1e-3 * std::max(best, rounding)) ++rises;

@@ -120,13 +120,14 @@ protected:
     return e;
   }
 
-  // ... and never increasing. The slack is the solver's default --tolerance
-  // (1e-8): once the decrease is that small the solver stops, and its last
-  // step may be round-off of that order (4e-9 relative has been seen).
+  // ... and never increasing. The relative slack is round-off of the last
+  // steps (4e-9 relative has been seen); the absolute one is the rounding of
+  // reduced energies, differences of large sums, at a minimum of energy 0
+  // (caricature factor 1 gives energies of +-6e-9).
   static void expect_decreasing_energies(const json& s)
   {
     const std::vector<double> e = energy_history(s);
-    for(std::size_t i = 1; i < e.size(); ++i) EXPECT_LE(e[i], e[i - 1] * (1 + 1e-8)) << "iteration " << i;
+    for(std::size_t i = 1; i < e.size(); ++i) EXPECT_LE(e[i], e[i - 1] * (1 + 1e-8) + 1e-7) << "iteration " << i;
   }
 };
 
