@@ -232,7 +232,7 @@ struct Embedding_solver::Impl
   Eigen::VectorXd rotation_gradient() const;
   double settle_at_rotations();
   double quasi_newton_improve(internal::Rotation_lbfgs& lbfgs, const std::vector<Eigen::Matrix3d>& start,
-                              double start_energy, Eigen::VectorXd& gradient, double energy);
+                              double start_energy, Eigen::VectorXd& gradient, double energy, bool try_step);
   Eigen::VectorXd solve_coordinates() const;
   Eigen::MatrixXd positions_rhs(const Eigen::VectorXd& lambda) const;
   Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
@@ -914,35 +914,34 @@ double Embedding_solver::Impl::settle_at_rotations()
 // or before any curvature is known, the local/global step is taken instead,
 // which never raises the energy, and its pair seeds the memory.
 // After an iteration from the settled rotations `start` (energy
-// `start_energy`, gradient `gradient`) reached a state of `energy`: the
-// L-BFGS step on the rotations from `start` replaces it where it lowers the
-// energy more, and by a fraction of what its slope promises (Armijo). The
-// step kept feeds the quasi-Newton memory; `gradient` becomes the new state's.
+// `start_energy`, gradient `gradient`) reached a state of `energy`: with
+// `try_step`, the L-BFGS step on the rotations from `start` replaces that
+// state where it lowers the energy more. One trial, no line search, so that
+// an iteration costs two energy evaluations as with Anderson's
+// extrapolation. The step kept feeds the memory; `gradient` becomes the new
+// state's.
 double Embedding_solver::Impl::quasi_newton_improve(internal::Rotation_lbfgs& lbfgs,
                                                     const std::vector<Eigen::Matrix3d>& start, double start_energy,
-                                                    Eigen::VectorXd& gradient, double energy)
+                                                    Eigen::VectorXd& gradient, double energy, bool try_step)
 {
   double best = energy;
   Eigen::VectorXd step = internal::rotation_step(start, rotations);
-  if(!lbfgs.empty())
+  if(try_step && !lbfgs.empty())
   {
     const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
     const Eigen::VectorXd kept_coordinates = coordinates;
     const Eigen::VectorXd direction = lbfgs.direction(gradient);
-    const double slope = gradient.dot(direction);
-    bool better = false;
-    for(double t = 1.; slope < 0. && t > 1e-3 && !better; t *= 0.5)
+    if(gradient.dot(direction) < 0.)
     {
-      rotations = internal::retract(start, t * direction);
+      rotations = internal::retract(start, direction);
       const double e = settle_at_rotations();
-      better = e <= start_energy + 1e-4 * t * slope && e < best;
-      if(better)
+      if(e < best && e <= start_energy + 1e-4 * gradient.dot(direction))
       {
         best = e;
-        step = t * direction;
+        step = direction;
       }
     }
-    if(!better)
+    if(best == energy)
     {
       rotations = kept_rotations;
       coordinates = kept_coordinates;
@@ -1368,6 +1367,13 @@ Solve_report Embedding_solver::solve_from_current_state()
   // them. Memory measured on the 36 real-mesh edits of quality_real_meshes:
   // 3 pairs 8% more iterations than 8, 20 pairs 8% fewer.
   const bool quasi_newton = reduced && d.options.quasi_newton;
+  // Each iteration evaluates one extrapolation of the local/global step: the
+  // L-BFGS step, or Anderson's once L-BFGS failed three times in a row to do
+  // better, until Anderson's fails in turn. Which one wins depends on the
+  // edit (measured: L-BFGS on symmetrize and caricature, Anderson on some
+  // drags).
+  bool prefer_lbfgs = true;
+  int lbfgs_failures = 0;
   internal::Rotation_lbfgs lbfgs(20);
   Eigen::VectorXd gradient;
 
@@ -1384,7 +1390,7 @@ Solve_report Embedding_solver::solve_from_current_state()
     const Eigen::VectorXd g = pack();
     const Eigen::VectorXd candidate = anderson.next(x, g);
     x = g;
-    if(candidate != g)
+    if((!quasi_newton || !prefer_lbfgs) && candidate != g)
     {
       const std::vector<Eigen::Matrix3d> plain_rotations = d.rotations;
       const std::vector<Eigen::Matrix3d> plain_w = d.w_blocks;
@@ -1392,10 +1398,8 @@ Solve_report Embedding_solver::solve_from_current_state()
       const double e_candidate = candidate.allFinite() ? evaluate(candidate) : std::numeric_limits<double>::infinity();
       if(e_candidate < e)
       {
-        // The combined coordinates are not the rotations' best: settling
-        // lowers the energy further and makes the gradient exact.
-        e = quasi_newton ? d.settle_at_rotations() : e_candidate;
         x = pack();
+        e = e_candidate;
       }
       else
       {
@@ -1404,12 +1408,16 @@ Solve_report Embedding_solver::solve_from_current_state()
         d.w_blocks = plain_w;
         if(!reduced) d.positions = plain_positions;
         anderson.restart();
+        prefer_lbfgs = true;
+        lbfgs_failures = 0;
       }
     }
     if(quasi_newton && it > 0)
     {
-      const double improved = d.quasi_newton_improve(lbfgs, start, previous, gradient, e);
+      const double improved = d.quasi_newton_improve(lbfgs, start, previous, gradient, e, prefer_lbfgs);
+      lbfgs_failures = improved < e ? 0 : lbfgs_failures + 1;
       if(improved < e) x = pack();
+      if(lbfgs_failures >= 3) prefer_lbfgs = false;
       e = improved;
     }
     else if(quasi_newton)

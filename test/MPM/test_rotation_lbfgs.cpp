@@ -91,25 +91,18 @@ TEST(Rotation_lbfgs, finds_the_closest_rotations)
 
 // The solver with L-BFGS steps reaches the minimum the local/global steps
 // reach, never raising the energy, in fewer iterations.
-// The hand exaggerated (caricature, factor 2), its palm held where it is:
-// one minimum, which local/global steps approach slowly.
+// The hand symmetrized: the same shape (up to the rigid motion a free piece
+// keeps, anchored by one vertex) as the local/global steps reach, in fewer
+// iterations.
 TEST(Rotation_lbfgs, solver_reaches_the_local_global_minimum_sooner)
 {
   const mpm_test::Learned& l = mpm_test::learned(Synthetic_family::hand, 3000);
-  const Embedding_problem problem = make_caricature_problem(l.model, 2.);
-  std::vector<int> palm;
-  for(const Synthetic_instance& i : l.truth.instances)
-    if(i.type == "palm")
-      for(std::size_t k = 0; k < 4; ++k) palm.push_back(i.vertices[k * i.vertices.size() / 4]);
-  ASSERT_EQ(palm.size(), 4u);
-  const Point_matrix rest = mpm_test::rows(l.truth.mesh.mesh.points, palm);
+  const Embedding_problem problem = make_symmetrization_problem(l.model);
   Embedding_options plain, quasi_newton;
   plain.quasi_newton = false;
   plain.max_iterations = quasi_newton.max_iterations = 1000;
-  plain.tolerance = quasi_newton.tolerance = 1e-10;
+  plain.tolerance = quasi_newton.tolerance = 1e-8;
   Embedding_solver a(problem, plain), b(problem, quasi_newton);
-  a.set_handles(palm, rest);
-  b.set_handles(palm, rest);
   const Solve_report ra = a.solve(), rb = b.solve();
   ASSERT_TRUE(ra.converged);
   ASSERT_TRUE(rb.converged);
@@ -120,9 +113,12 @@ TEST(Rotation_lbfgs, solver_reaches_the_local_global_minimum_sooner)
     EXPECT_LE(rb.energies[i], rb.energies[i - 1] + 1e-9 * rb.energies.front()) << "iteration " << i;
   EXPECT_LE(rb.energies[n - 1], rb.energies[n - 2] + 1e-7 * rb.energies.front());
   EXPECT_LE(rb.energy(), ra.energy() + 1e-7 * rb.energies.front());
+  const Eigen::Matrix3Xd pa = a.positions().transpose(), pb = b.positions().transpose();
+  const Eigen::Matrix4d align = Eigen::umeyama(pb, pa, false);
+  const Eigen::Matrix3Xd aligned = (align.topLeftCorner<3, 3>() * pb).colwise() + align.topRightCorner<3, 1>();
   const double diagonal = mpm_test::diagonal(l.truth.mesh.mesh.points);
-  EXPECT_LT((a.positions() - b.positions()).rowwise().norm().maxCoeff(), 1e-4 * diagonal);
-  EXPECT_LT(rb.iterations, ra.iterations);
+  EXPECT_LT((aligned - pa).colwise().norm().maxCoeff(), 1e-5 * diagonal); // measured 1.4e-6
+  EXPECT_LT(rb.iterations, ra.iterations) << "local/global " << ra.iterations << ", quasi-Newton " << rb.iterations;
 }
 
 } // namespace
