@@ -228,6 +228,7 @@ struct Embedding_solver::Impl
   Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
   void local_step();
   Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
+  Eigen::Matrix3d fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const;
   void reduced_local_step();
   Eigen::VectorXd rotation_gradient() const;
   double settle_at_rotations();
@@ -860,17 +861,20 @@ double Embedding_solver::Impl::reduced_energy(const Eigen::VectorXd& lambda, con
   return e - b_a_b;
 }
 
-// The rotation fit from blocks: C_c = V^T L_c M~_c = sum_d R_d W[d][c] + (X_c^T Z)^T.
-void Embedding_solver::Impl::reduced_local_step()
+// The rotation fit's covariance from blocks, for rotations `r`:
+// C_c = V^T L_c M~_c = sum_d R_d W[d][c] + (X_c^T Z)^T.
+Eigen::Matrix3d Embedding_solver::Impl::fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const
 {
   const int nc = static_cast<int>(clusters.size());
+  Eigen::Matrix3d covariance = w_blocks[std::size_t(nc) * nc + c].transpose();
+  for(int d = 0; d < nc; ++d) covariance += r[d] * w_blocks[std::size_t(d) * nc + c];
+  return covariance;
+}
+
+void Embedding_solver::Impl::reduced_local_step()
+{
   const std::vector<Eigen::Matrix3d> previous = rotations;
-  for(int c = 0; c < nc; ++c)
-  {
-    Eigen::Matrix3d covariance = w_blocks[std::size_t(nc) * nc + c].transpose();
-    for(int d = 0; d < nc; ++d) covariance += previous[d] * w_blocks[std::size_t(d) * nc + c];
-    rotations[c] = closest_rotation(covariance);
-  }
+  for(int c = 0; c < static_cast<int>(clusters.size()); ++c) rotations[c] = closest_rotation(fit_covariance(c, previous));
 }
 
 // The gradient of the reduced energy in the rotations, each in its own frame
@@ -884,9 +888,7 @@ Eigen::VectorXd Embedding_solver::Impl::rotation_gradient() const
   Eigen::VectorXd g(3 * nc);
   for(int c = 0; c < nc; ++c)
   {
-    Eigen::Matrix3d covariance = w_blocks[std::size_t(nc) * nc + c].transpose();
-    for(int d = 0; d < nc; ++d) covariance += rotations[d] * w_blocks[std::size_t(d) * nc + c];
-    const Eigen::Matrix3d m = rotations[c].transpose() * covariance;
+    const Eigen::Matrix3d m = rotations[c].transpose() * fit_covariance(c, rotations);
     g.segment<3>(3 * c) = -2. * Eigen::Vector3d(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
   }
   return g;
