@@ -199,7 +199,7 @@ void guard_inputs_against_overwriting(bool guard)
 
 void remove_temporary_files_on_signals()
 {
-  for(int signal_number : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal_number, remove_temporaries_and_reraise);
+  for(int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) std::signal(signal_number, remove_temporaries_and_reraise);
 }
 
 int remove_on_signals(const std::string& path) { return register_temporary(path); }

@@ -445,6 +445,8 @@ TEST_F(Cli_editing, DashReadsStandardInputAndWritesStandardOutput)
   ASSERT_EQ(graph.status, 0) << graph.err;
   EXPECT_EQ(json::parse(graph.out)["format"], "cgal-mpm-part-graph");
 
+  // A reader that stops early (SIGPIPE) leaves no temporary copy either.
+  run_piped("deform " + quote(model()) + " --handles " + quote(h) + " -o - | head -c 10", "/dev/null");
   expect_error(run_piped("info -", h), 1, {"mpm: error: -: "});
   expect_error(run_piped("deform " + quote(model()) + " --handles " + quote(h) + " -o - --json", "/dev/null"), 2,
                {"--json both write to standard output"});

@@ -31,7 +31,8 @@ void check_readable_file(const std::string& path);
 // program that saves what it loaded does not ask for it. Off by default.
 void guard_inputs_against_overwriting(bool guard);
 
-// SIGINT, SIGTERM and SIGHUP remove the temporary files being written,
+// SIGINT, SIGTERM, SIGHUP and SIGPIPE (a reader of standard output that
+// stopped reading) remove the temporary files being written,
 // then end the process as the signal would have.
 void remove_temporary_files_on_signals();
 
