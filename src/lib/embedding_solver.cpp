@@ -229,6 +229,11 @@ struct Embedding_solver::Impl
   void local_step();
   Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
   Eigen::Matrix3d fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const;
+  void start_at_rigid_fit_of_handles();
+  Eigen::VectorXd packed_state() const;
+  double enter_state(const Eigen::VectorXd& x);
+  bool take_if_lower(const Eigen::VectorXd& candidate, const Eigen::VectorXd& plain, double& energy);
+  void check_not_diverging(double e, double best, int& rises, int iteration);
   void reduced_local_step();
   Eigen::VectorXd rotation_gradient() const;
   double settle_at_rotations();
@@ -915,6 +920,87 @@ double Embedding_solver::Impl::settle_at_rotations()
 // what its slope promises (Armijo); where none does within a few halvings,
 // or before any curvature is known, the local/global step is taken instead,
 // which never raises the energy, and its pair seeds the memory.
+// From the rest state, start at the best rigid placement of the handles
+// when it fits them better: a rigid edit is then solved at once.
+void Embedding_solver::Impl::start_at_rigid_fit_of_handles()
+{
+  if(handle_vertices.size() < 3) return;
+  Point_matrix rest(handle_vertices.size(), 3);
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h) rest.row(h) = mesh.points.row(handle_vertices[h]);
+  const Rigid_motion motion = fit_rigid_motion(rest, handle_targets);
+  if((motion.apply(rest) - handle_targets).squaredNorm() >= (rest - handle_targets).squaredNorm()) return;
+  positions = motion.apply(mesh.points);
+  implicit = false;
+  positions_valid = true;
+  local_step();
+}
+
+// The state Anderson acceleration combines: rotations and coordinates when
+// positions are implicit (so that iterations stay independent of the vertex
+// count), positions and coordinates otherwise.
+Eigen::VectorXd Embedding_solver::Impl::packed_state() const
+{
+  const bool reduced = options.global_step == Global_step::reduced;
+  const int nc = static_cast<int>(clusters.size());
+  Eigen::VectorXd x(reduced ? 9 * nc + total_modes : 3 * n + total_modes);
+  if(reduced)
+    for(int c = 0; c < nc; ++c) x.segment<9>(9 * c) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(rotations[c].data());
+  else
+    for(int a = 0; a < 3; ++a) x.segment(a * n, n) = positions.col(a);
+  x.tail(total_modes) = coordinates;
+  return x;
+}
+
+// Moves to the packed state `x` (rotations projected onto SO(3)) and returns its energy.
+double Embedding_solver::Impl::enter_state(const Eigen::VectorXd& x)
+{
+  coordinates = x.tail(total_modes);
+  if(options.global_step == Global_step::reduced)
+  {
+    for(int c = 0; c < static_cast<int>(clusters.size()); ++c)
+      rotations[c] = closest_rotation(Eigen::Map<const Eigen::Matrix3d>(x.segment<9>(9 * c).data()));
+    w_blocks = w_of(coordinates);
+    return reduced_energy(coordinates, w_blocks);
+  }
+  for(int a = 0; a < 3; ++a) positions.col(a) = x.segment(a * n, n);
+  local_step();
+  return energy_of(positions, coordinates);
+}
+
+// Moves to the packed `candidate` when its energy is below `energy` (then
+// updated); otherwise stays in the current state, the packed `plain`.
+bool Embedding_solver::Impl::take_if_lower(const Eigen::VectorXd& candidate, const Eigen::VectorXd& plain,
+                                           double& energy)
+{
+  const std::vector<Eigen::Matrix3d> plain_rotations = rotations, plain_w = w_blocks;
+  const Point_matrix plain_positions = options.global_step == Global_step::reduced ? Point_matrix() : positions;
+  const double e = candidate.allFinite() ? enter_state(candidate) : std::numeric_limits<double>::infinity();
+  if(e < energy)
+  {
+    energy = e;
+    return true;
+  }
+  coordinates = plain.tail(total_modes);
+  rotations = plain_rotations;
+  w_blocks = plain_w;
+  if(options.global_step != Global_step::reduced) positions = plain_positions;
+  return false;
+}
+
+// Each step minimizes the energy over its block of unknowns, so a rise
+// beyond rounding means the numbers, not the model, went wrong.
+void Embedding_solver::Impl::check_not_diverging(double e, double best, int& rises, int iteration)
+{
+  const double rounding = 1e-9 * energy_unit();
+  if(e > best + 1e-3 * std::max(best, rounding)) ++rises;
+  else rises = 0;
+  if(rises >= 3 || e > best + 1e3 * std::max(best, rounding))
+    throw Computation_error("embedding: diverging in iteration " + std::to_string(iteration) + " (energy " +
+                            std::to_string(e) + ", lowest " + std::to_string(best) + "), mostly in " +
+                            largest_energy_term(materialized_positions(), coordinates) +
+                            "; the previous state is kept");
+}
+
 // After an iteration from the settled rotations `start` (energy
 // `start_energy`, gradient `gradient`) reached a state of `energy`: with
 // `try_step`, the L-BFGS step on the rotations from `start` replaces that
@@ -1317,58 +1403,15 @@ Solve_report Embedding_solver::solve()
 Solve_report Embedding_solver::solve_from_current_state()
 {
   Impl& d = *impl_;
-  // From the rest state, start at the best rigid placement of the handles
-  // when it fits them better: a rigid edit is then solved at once.
-  if(d.iterations_since_reset == 0 && d.handle_vertices.size() >= 3)
-  {
-    Point_matrix rest(d.handle_vertices.size(), 3);
-    for(std::size_t h = 0; h < d.handle_vertices.size(); ++h) rest.row(h) = d.mesh.points.row(d.handle_vertices[h]);
-    const Rigid_motion motion = fit_rigid_motion(rest, d.handle_targets);
-    if((motion.apply(rest) - d.handle_targets).squaredNorm() < (rest - d.handle_targets).squaredNorm())
-    {
-      d.positions = motion.apply(d.mesh.points);
-      d.implicit = false;
-      d.positions_valid = true;
-      d.local_step();
-    }
-  }
+  if(d.iterations_since_reset == 0) d.start_at_rigid_fit_of_handles();
   Solve_report report;
   // Implicit positions have their energy from the blocks, without a back-substitution.
   double previous = d.implicit ? d.reduced_energy(d.coordinates, d.w_blocks) : energy();
 
-  // The accelerated state: rotations and coordinates when positions are
-  // implicit (so that iterations stay independent of the vertex count),
-  // positions and coordinates otherwise.
-  const bool reduced = d.options.global_step == Global_step::reduced;
-  const int nc = number_of_clusters();
-  const auto pack = [&]() {
-    Eigen::VectorXd x(reduced ? 9 * nc + d.total_modes : 3 * d.n + d.total_modes);
-    if(reduced)
-      for(int c = 0; c < nc; ++c) x.segment<9>(9 * c) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(d.rotations[c].data());
-    else
-      for(int a = 0; a < 3; ++a) x.segment(a * d.n, d.n) = d.positions.col(a);
-    x.tail(d.total_modes) = d.coordinates;
-    return x;
-  };
-  // Moves to the state `x` and returns its energy.
-  const auto evaluate = [&](const Eigen::VectorXd& x) {
-    d.coordinates = x.tail(d.total_modes);
-    if(reduced)
-    {
-      for(int c = 0; c < nc; ++c)
-        d.rotations[c] = closest_rotation(Eigen::Map<const Eigen::Matrix3d>(x.segment<9>(9 * c).data()));
-      d.w_blocks = d.w_of(d.coordinates);
-      return d.reduced_energy(d.coordinates, d.w_blocks);
-    }
-    for(int a = 0; a < 3; ++a) d.positions.col(a) = x.segment(a * d.n, d.n);
-    d.local_step();
-    return d.energy_of(d.positions, d.coordinates);
-  };
-
   // With implicit positions the rotations alone are the state: L-BFGS on
   // them. Memory measured on the 36 real-mesh edits of quality_real_meshes:
   // 3 pairs 8% more iterations than 8, 20 pairs 8% fewer.
-  const bool quasi_newton = reduced && d.options.quasi_newton;
+  const bool quasi_newton = d.options.global_step == Global_step::reduced && d.options.quasi_newton;
   // Each iteration evaluates one extrapolation of the local/global step: the
   // L-BFGS step, or Anderson's once L-BFGS failed three times in a row to do
   // better, until Anderson's fails in turn. Which one wins depends on the
@@ -1380,8 +1423,7 @@ Solve_report Embedding_solver::solve_from_current_state()
   Eigen::VectorXd gradient;
 
   Anderson_acceleration anderson(std::max(0, d.options.anderson_history));
-  Eigen::VectorXd x = pack();
-  const double rounding = 1e-9 * d.energy_unit();
+  Eigen::VectorXd x = d.packed_state();
   double best = previous;
   int rises = 0;
   for(int it = 0; it < d.options.max_iterations; ++it)
@@ -1389,26 +1431,15 @@ Solve_report Embedding_solver::solve_from_current_state()
     internal::throw_if_cancelled(d.options.cancel, "solve");
     const std::vector<Eigen::Matrix3d> start = d.rotations;
     double e = iterate();
-    const Eigen::VectorXd g = pack();
+    const Eigen::VectorXd g = d.packed_state();
     const Eigen::VectorXd candidate = anderson.next(x, g);
     x = g;
     if((!quasi_newton || !prefer_lbfgs) && candidate != g)
     {
-      const std::vector<Eigen::Matrix3d> plain_rotations = d.rotations;
-      const std::vector<Eigen::Matrix3d> plain_w = d.w_blocks;
-      const Point_matrix plain_positions = reduced ? Point_matrix() : d.positions;
-      const double e_candidate = candidate.allFinite() ? evaluate(candidate) : std::numeric_limits<double>::infinity();
-      if(e_candidate < e)
-      {
-        x = pack();
-        e = e_candidate;
-      }
+      if(d.take_if_lower(candidate, g, e))
+        x = d.packed_state();
       else
       {
-        d.coordinates = g.tail(d.total_modes);
-        d.rotations = plain_rotations;
-        d.w_blocks = plain_w;
-        if(!reduced) d.positions = plain_positions;
         anderson.restart();
         prefer_lbfgs = true;
         lbfgs_failures = 0;
@@ -1418,21 +1449,13 @@ Solve_report Embedding_solver::solve_from_current_state()
     {
       const double improved = d.quasi_newton_improve(lbfgs, start, previous, gradient, e, prefer_lbfgs);
       lbfgs_failures = improved < e ? 0 : lbfgs_failures + 1;
-      if(improved < e) x = pack();
+      if(improved < e) x = d.packed_state();
       if(lbfgs_failures >= 3) prefer_lbfgs = false;
       e = improved;
     }
     else if(quasi_newton)
       gradient = d.rotation_gradient();
-    // Each step minimizes the energy over its block of unknowns, so a rise
-    // beyond rounding means the numbers, not the model, went wrong.
-    if(e > best + 1e-3 * std::max(best, rounding)) ++rises;
-    else rises = 0;
-    if(rises >= 3 || e > best + 1e3 * std::max(best, rounding))
-      throw Computation_error("embedding: diverging in iteration " + std::to_string(it + 1) + " (energy " +
-                              std::to_string(e) + ", lowest " + std::to_string(best) + "), mostly in " +
-                              d.largest_energy_term(d.materialized_positions(), d.coordinates) +
-                              "; the previous state is kept");
+    d.check_not_diverging(e, best, rises, it + 1);
     best = std::min(best, e);
     report.energies.push_back(e);
     ++report.iterations;
@@ -1446,7 +1469,7 @@ Solve_report Embedding_solver::solve_from_current_state()
   }
   // Reduced energies are differences of large sums; the reported residual is
   // evaluated exactly at the final positions.
-  if(reduced && !report.energies.empty()) report.energies.back() = energy();
+  if(d.options.global_step == Global_step::reduced && !report.energies.empty()) report.energies.back() = energy();
   return report;
 }
 
