@@ -11,7 +11,6 @@
 #include <CGAL/Weights/utils.h>
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_MPM_HAS_CHOLMOD
@@ -236,7 +235,7 @@ struct Embedding_solver::Impl
   void check_not_diverging(double e, double best, int& rises, int iteration);
   void reduced_local_step();
   Eigen::VectorXd rotation_gradient() const;
-  double settle_at_rotations();
+  double settle_at_rotations(Iteration_timings* timings = nullptr);
   double quasi_newton_improve(internal::Rotation_lbfgs& lbfgs, const std::vector<Eigen::Matrix3d>& start,
                               double start_energy, Eigen::VectorXd& gradient, double energy, bool try_step);
   Eigen::VectorXd solve_coordinates() const;
@@ -899,14 +898,25 @@ Eigen::VectorXd Embedding_solver::Impl::rotation_gradient() const
   return g;
 }
 
-// Coordinates and implicit positions optimal for the current rotations; the
-// reduced energy there.
-double Embedding_solver::Impl::settle_at_rotations()
+// Coordinates and implicit positions optimal for the current rotations (the
+// reduced global step); the reduced energy there. `timings`, when given,
+// receives the time of each phase.
+double Embedding_solver::Impl::settle_at_rotations(Iteration_timings* timings)
 {
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point mark = Clock::now();
+  const auto lap = [&](double Iteration_timings::*phase) {
+    const Clock::time_point now = Clock::now();
+    if(timings) timings->*phase += std::chrono::duration<double, std::milli>(now - mark).count();
+    mark = now;
+  };
   Eigen::VectorXd lambda = solve_coordinates();
-  if(!lambda.allFinite()) check_finite(positions, lambda);
+  lap(&Iteration_timings::schur_ms);
   std::vector<Eigen::Matrix3d> w = w_of(lambda);
+  lap(&Iteration_timings::right_hand_side_ms);
   const double e = reduced_energy(lambda, w);
+  lap(&Iteration_timings::energy_ms);
+  if(!lambda.allFinite()) check_finite(positions, lambda);
   if(!std::isfinite(e)) fail_on_non_finite_energy(positions_from(lambda), lambda);
   coordinates = std::move(lambda);
   w_blocks = std::move(w);
@@ -915,11 +925,6 @@ double Embedding_solver::Impl::settle_at_rotations()
   return e;
 }
 
-// One step of L-BFGS on the rotations from a settled state of `energy` and
-// `gradient` (both updated). A step must lower the energy by a fraction of
-// what its slope promises (Armijo); where none does within a few halvings,
-// or before any curvature is known, the local/global step is taken instead,
-// which never raises the energy, and its pair seeds the memory.
 // From the rest state, start at the best rigid placement of the handles
 // when it fits them better: a rigid edit is then solved at once.
 void Embedding_solver::Impl::start_at_rigid_fit_of_handles()
@@ -1019,17 +1024,20 @@ double Embedding_solver::Impl::quasi_newton_improve(internal::Rotation_lbfgs& lb
     const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
     const Eigen::VectorXd kept_coordinates = coordinates;
     const Eigen::VectorXd direction = lbfgs.direction(gradient);
-    if(gradient.dot(direction) < 0.)
+    const double slope = gradient.dot(direction);
+    bool taken = false;
+    if(slope < 0.)
     {
       rotations = internal::retract(start, direction);
       const double e = settle_at_rotations();
-      if(e < best && e <= start_energy + 1e-4 * gradient.dot(direction))
+      taken = e < best && e <= start_energy + 1e-4 * slope;
+      if(taken)
       {
         best = e;
         step = direction;
       }
     }
-    if(best == energy)
+    if(!taken)
     {
       rotations = kept_rotations;
       coordinates = kept_coordinates;
@@ -1273,18 +1281,7 @@ double Embedding_solver::iterate()
     {
     case Global_step::reduced:
     {
-      Eigen::VectorXd lambda = d.solve_coordinates();
-      lap(t.schur_ms);
-      std::vector<Eigen::Matrix3d> w = d.w_of(lambda);
-      lap(t.right_hand_side_ms);
-      const double e = d.reduced_energy(lambda, w);
-      lap(t.energy_ms);
-      if(!lambda.allFinite()) d.check_finite(d.positions, lambda);
-      if(!std::isfinite(e)) d.fail_on_non_finite_energy(d.positions_from(lambda), lambda);
-      d.coordinates = std::move(lambda);
-      d.w_blocks = std::move(w);
-      d.implicit = true;
-      d.positions_valid = false;
+      const double e = d.settle_at_rotations(&t);
       ++d.iterations_since_reset;
       return e;
     }
