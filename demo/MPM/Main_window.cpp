@@ -296,7 +296,7 @@ void Main_window::open_mesh()
                                                 guess + ".seg", "Labels (*.seg)");
   if(labels.isEmpty()) labels = "components";
   const QString annotation = QFileDialog::getOpenFileName(
-    this, "Its annotation (.json; cancel: part types proposed from the segmentation)", guess + ".json", "Annotations (*.json)");
+    this, "Its annotation (.json; cancel: types proposed from the segmentation, or parts grouped by connectivity)", guess + ".json", "Annotations (*.json)");
   guarded([&] { session_.load_labeled_mesh(mesh.toStdString(), labels.toStdString(), annotation.toStdString()); });
 }
 
