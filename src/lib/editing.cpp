@@ -5,6 +5,7 @@
 #include <CGAL/MPM/Surface_soundness.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Shape_exaggeration.h>
+#include <CGAL/MPM/internal/Target_unfolding.h>
 
 #include <functional>
 #include <set>
@@ -21,7 +22,8 @@ using Target_policy = std::function<Part_target(const Part_type& type, const Eig
 // The clusters of example `example` over its own mesh (the construction is
 // shared with assembly, see internal/Part_graph_problem.h).
 Embedding_problem make_problem(const Morphable_part_model& model, int example, const Target_policy& policy,
-                               const std::function<Eigen::VectorXd(const Shape_space&)>& pair_sigmas)
+                               const std::function<Eigen::VectorXd(const Shape_space&)>& pair_sigmas,
+                               bool unfold_targets)
 {
   if(example < 0 || example >= static_cast<int>(model.examples.size()))
     throw Input_error("model", "example " + std::to_string(example),
@@ -29,11 +31,18 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
   const Training_example& ex = model.examples[example];
   // A stitched example (parts corresponded separately) has merged seams.
   const internal::Graph_refinement refined = internal::refine_part_graph(model, ex.graph);
-  return internal::make_part_graph_problem(
+  Embedding_problem problem = internal::make_part_graph_problem(
     model, ex.graph, ex.mesh,
     [&](int node, const Shape_space&, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
         const std::string&) { return policy(model.types[ex.graph.nodes[node].type], coordinates, rest); },
     pair_sigmas, refined.empty() ? nullptr : &refined.nodes, true);
+  // Seam vertices interpolated into a part, and pair targets assembled from
+  // two parts, can still turn faces over next to a seam. (A deformation's
+  // targets are the rest itself: scanned slivers there only look turned.)
+  if(unfold_targets)
+    for(Cluster& c : problem.clusters)
+      c.mean = internal::unfold_target(c.mean, internal::gather_rows(ex.mesh.points, c.vertices), c.triangles);
+  return problem;
 }
 
 } // namespace
@@ -100,10 +109,11 @@ Embedding_problem make_caricature_problem(const Morphable_part_model& model, dou
   return make_problem(model, example, [factor, by_rotations](const Part_type& type, const Eigen::VectorXd& coordinates,
                                                              const Point_matrix& rest) {
     Part_target t;
-    t.mean = exaggerated_target(type, coordinates, rest, factor, by_rotations);
+    t.mean = internal::unfold_target(exaggerated_target(type, coordinates, rest, factor, by_rotations), rest,
+                                     type.triangles);
     t.sigmas = type.space.sigmas;
     return t;
-  }, learned_sigmas);
+  }, learned_sigmas, factor != 1.);
 }
 
 Embedding_problem make_symmetrization_problem(const Morphable_part_model& model, int example,
@@ -128,11 +138,12 @@ Embedding_problem make_symmetrization_problem(const Morphable_part_model& model,
     else
     {
       const auto it = options.type_coordinates.find(type.name);
-      t.mean = it == options.type_coordinates.end() ? space.mean : space.shape(it->second);
+      t.mean = internal::unfold_target(it == options.type_coordinates.end() ? space.mean : space.shape(it->second),
+                                       rest, type.triangles);
     }
     t.sigmas = isotropic_sigmas(space, options.relative_sigma);
     return t;
-  }, [&options](const Shape_space& space) { return isotropic_sigmas(space, options.relative_sigma); });
+  }, [&options](const Shape_space& space) { return isotropic_sigmas(space, options.relative_sigma); }, true);
 }
 
 } // namespace MPM

@@ -1,0 +1,30 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_INTERNAL_TARGET_UNFOLDING_H
+#define CGAL_MPM_INTERNAL_TARGET_UNFOLDING_H
+
+#include <CGAL/MPM/Indexed_mesh.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+
+// `target` (n x 3, in any frame) with the faces it turns inside out against
+// `rest` (the same triangles) unfolded: around those faces (and a ring or
+// two more, grown until no face stays inverted or the region stops
+// improving) the target takes the rest's local shape, placed as rigidly as
+// possible (CGAL's ARAP) between the target's positions around it. An edit
+// asks for such targets when the mean of a part type carries a fold one of
+// its instances does not (a correspondence fold averaged in), or when a
+// caricature doubles a bend past the point where the inside of the joint
+// turns over; the solver would reproduce them faithfully. Returns `target`
+// itself when nothing is inverted.
+Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest, const std::vector<Triangle>& triangles);
+
+} // namespace internal
+} // namespace MPM
+} // namespace CGAL
+
+#endif

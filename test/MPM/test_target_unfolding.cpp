@@ -1,0 +1,82 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Unfolding an edit's target: a fold pushed through a tube is taken out
+// around the fold and nowhere else; a tube bent past a half turn is no fold.
+#include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/internal/Target_unfolding.h>
+
+#include "Tube_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace {
+
+using namespace CGAL::MPM;
+
+constexpr int rings = 25, sides = 16;
+constexpr double length = 2., radius = 0.2;
+
+// The tube bent along a circular arc of total angle `angle` (0: straight,
+// along z), lengths along the axis kept.
+Point_matrix tube(double angle)
+{
+  Point_matrix p(rings * sides, 3);
+  for(int r = 0; r < rings; ++r)
+  {
+    const double t = length * r / (rings - 1), phi = angle * t / length;
+    const Eigen::RowVector3d centre =
+      angle == 0. ? Eigen::RowVector3d(0., 0., t)
+                  : Eigen::RowVector3d(0., length / angle * (1. - std::cos(phi)), length / angle * std::sin(phi));
+    const Eigen::RowVector3d across(0., std::cos(phi), -std::sin(phi));
+    for(int s = 0; s < sides; ++s)
+    {
+      const double alpha = 2. * M_PI * s / sides;
+      p.row(r * sides + s) = centre + radius * (std::cos(alpha) * Eigen::RowVector3d::UnitX() + std::sin(alpha) * across);
+    }
+  }
+  return p;
+}
+
+Indexed_mesh mesh_of(const Point_matrix& p)
+{
+  Indexed_mesh m;
+  m.points = p;
+  m.triangles = mpm_test::tube_triangles(rings, sides);
+  return m;
+}
+
+TEST(Target_unfolding, a_tube_bent_past_a_half_turn_is_kept)
+{
+  const Point_matrix rest = tube(0.), target = tube(3.6); // 206 degrees, on a radius 2.8 times the tube's
+  // One rotation for the whole tube sees the far half turned over ...
+  ASSERT_GE(inverted_faces(mesh_of(target), mesh_of(rest)).size(), 10u);
+  // ... but no face is folded against its neighbourhood.
+  const Point_matrix unfolded = internal::unfold_target(target, rest, mpm_test::tube_triangles(rings, sides));
+  EXPECT_EQ((unfolded - target).cwiseAbs().maxCoeff(), 0.);
+}
+
+TEST(Target_unfolding, a_fold_is_taken_out_where_it_is)
+{
+  const Point_matrix rest = tube(0.);
+  Point_matrix target = rest;
+  // A vertex of the middle ring pushed through the axis to the far side.
+  const int fold = (rings / 2) * sides;
+  target.row(fold) = Eigen::RowVector3d(-1.5 * radius, 0., rest(fold, 2));
+  const std::size_t before = inverted_faces(mesh_of(target), mesh_of(rest)).size();
+  ASSERT_GE(before, 4u);
+  const Point_matrix unfolded = internal::unfold_target(target, rest, mpm_test::tube_triangles(rings, sides));
+  EXPECT_EQ(inverted_faces(mesh_of(unfolded), mesh_of(rest)).size(), 0u);
+  // The vertex goes back near its place on the wall.
+  EXPECT_LT((unfolded.row(fold) - rest.row(fold)).norm(), 0.3 * radius);
+  // Rings more than six away from the fold are the target's.
+  for(int r = 0; r < rings; ++r)
+    if(std::abs(r - rings / 2) > 6)
+      for(int s = 0; s < sides; ++s) EXPECT_EQ(unfolded.row(r * sides + s), target.row(r * sides + s)) << r << " " << s;
+}
+
+} // namespace
