@@ -1165,6 +1165,95 @@ void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, co
   }
 }
 
+// Template vertices pulled onto the segment's points that the mapped
+// template misses. Projection takes each template vertex to its closest
+// surface point, which never reaches the apex of a pointed extremity (a
+// finger's pad, a leg's claw): the learned example stopped short of the
+// input there by up to 0.7% of the mesh's diagonal. Farthest point first,
+// the nearest free template vertex moves onto it, unless that turns one of
+// its triangles against the surface; a point more than three edges from
+// every template vertex is a region the fit missed, not an apex, and stays.
+void cover_missed_points(const Surface& s, const Template_info& info, const Landmarks& lm,
+                         const std::vector<Triangle>& triangles, Point_matrix& y)
+{
+  const Eigen::Index n = y.rows();
+  std::vector<bool> fixed(std::size_t(n), false);
+  for(Eigen::Index v = 0; v < n; ++v) fixed[v] = info.loop[v] >= 0 || info.neighbours[v].empty();
+  for(const auto& [v, p] : lm.vertex_targets) fixed[v] = true;
+  std::vector<std::vector<int>> faces_of{std::size_t(n)};
+  double edge = 0.;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      faces_of[std::size_t(triangles[f][k])].push_back(int(f));
+      edge += (y.row(triangles[f][k]) - y.row(triangles[f][(k + 1) % 3])).norm();
+    }
+  if(triangles.empty()) return;
+  edge /= 3. * double(triangles.size());
+  const auto faces_the_surface = [&](int v) {
+    for(int f : faces_of[std::size_t(v)])
+    {
+      const Triangle& t = triangles[std::size_t(f)];
+      const Vec3 a = y.row(t[0]), b = y.row(t[1]), c = y.row(t[2]);
+      Vec3 normal;
+      s.closest((a + b + c) / 3., &normal);
+      if((b - a).cross(c - a).dot(normal) <= 0.) return false;
+    }
+    return true;
+  };
+  for(int pass = 0; pass < 8; ++pass)
+  {
+    std::vector<Kernel::Triangle_3> mapped;
+    for(const Triangle& t : triangles)
+    {
+      const Kernel::Triangle_3 tri(to_point(y.row(t[0])), to_point(y.row(t[1])), to_point(y.row(t[2])));
+      if(!tri.is_degenerate()) mapped.push_back(tri);
+    }
+    if(mapped.empty()) return;
+    Triangle_tree tree(mapped.begin(), mapped.end());
+    tree.accelerate_distance_queries();
+    std::vector<std::pair<double, int>> missed;
+    for(Eigen::Index p = 0; p < s.mesh.points.rows(); ++p)
+    {
+      const double d = std::sqrt(tree.squared_distance(to_point(s.mesh.points.row(p))));
+      if(d > 0.5 * edge) missed.emplace_back(d, int(p));
+    }
+    std::sort(missed.rbegin(), missed.rend());
+    std::vector<Vec3> covered; // points moved onto in this pass
+    for(const auto& [d, p] : missed)
+    {
+      const Vec3 q = s.mesh.points.row(p).transpose();
+      if(std::any_of(covered.begin(), covered.end(), [&](const Vec3& c) { return (c - q).norm() < 2. * edge; })) continue;
+      int nearest = -1;
+      for(Eigen::Index v = 0; v < n; ++v)
+        if(!fixed[v] && (nearest < 0 || (y.row(v).transpose() - q).norm() < (y.row(nearest).transpose() - q).norm()))
+          nearest = int(v);
+      if(nearest < 0 || (y.row(nearest).transpose() - q).norm() > 3. * edge) continue;
+      const Point_matrix before = y;
+      y.row(nearest) = q.transpose();
+      // Its neighbours follow halfway, so that its triangles do not become slivers.
+      for(int relax = 0; relax < 2; ++relax)
+        for(int w : info.neighbours[std::size_t(nearest)])
+        {
+          if(fixed[std::size_t(w)]) continue;
+          Vec3 mean = Vec3::Zero();
+          for(int x : info.neighbours[std::size_t(w)]) mean += y.row(x).transpose();
+          y.row(w) = s.closest(mean / double(info.neighbours[std::size_t(w)].size())).transpose();
+        }
+      bool sound = faces_the_surface(nearest);
+      for(int w : info.neighbours[std::size_t(nearest)]) sound = sound && faces_the_surface(w);
+      if(!sound)
+      {
+        y = before;
+        continue;
+      }
+      fixed[nearest] = true;
+      covered.push_back(q);
+    }
+    if(covered.empty()) return;
+  }
+}
+
 std::string percent(double fraction)
 {
   char text[32];
@@ -1378,7 +1467,11 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
   }
   for(std::size_t i = 0; i < m; ++i)
   {
-    if(i > 0) unfold(*surfaces[i], info, landmarks[i], result.triangles, positions[i]);
+    if(i > 0)
+    {
+      unfold(*surfaces[i], info, landmarks[i], result.triangles, positions[i]);
+      cover_missed_points(*surfaces[i], info, landmarks[i], result.triangles, positions[i]);
+    }
     result.segments[i].positions = positions[i];
     result.segments[i].unrefined = unrefined[i];
     result.segments[i].residual = i == 0 ? 0. : coverage_residual(*surfaces[i], positions[i], result.triangles);
