@@ -40,6 +40,7 @@ struct Edit_result
   bool converged = false;
   int iterations = 0;
   Surface_soundness soundness;
+  int inverted_before_unfolding = 0; // in the solver's result, before unfold_faces()
   int new_inverted = 0;      // faces inside out within their part that were not folded at rest
   int unfolded = 0;          // inverted against the rest because the edit unfolded a rest fold
   int new_self_intersections = 0;
@@ -65,14 +66,18 @@ Point_matrix rows(const Point_matrix& p, const std::vector<int>& v, std::size_t 
 }
 
 Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem& problem, Embedding_solver& solver,
-                     const Surface_soundness& rest, const std::vector<int>& folded_at_rest)
+                     const Surface_soundness& rest, const std::vector<int>& folded_at_rest, const std::vector<int>& held)
 {
   Edit_result r;
   const Solve_report report = solver.solve();
   r.converged = report.converged;
   r.iterations = report.iterations;
   Indexed_mesh after = problem.mesh;
-  after.points = solver.positions();
+  r.inverted_before_unfolding =
+    static_cast<int>(inverted_faces(Indexed_mesh{solver.positions(), problem.mesh.triangles}, problem.mesh,
+                                    &model.examples.front().face_labels).size());
+  // What the user gets, as `mpm` writes it: the folds taken out.
+  after.points = unfold_faces(problem.mesh, solver.positions(), held);
   r.soundness = check_surface(after, &problem.mesh, &model.examples.front().face_labels);
   for(int f : inverted_faces(after, problem.mesh, &model.examples.front().face_labels))
     ++(std::binary_search(folded_at_rest.begin(), folded_at_rest.end(), f) ? r.unfolded : r.new_inverted);
@@ -98,15 +103,17 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   // Whether the solve has settled: the tolerance is relative to the energy,
   // which says little when the energy is small or large.
   const double diagonal = (after.points.colwise().maxCoeff() - after.points.colwise().minCoeff()).norm();
+  const Point_matrix solved = solver.positions();
   for(int k = 0; k < 10; ++k) solver.iterate();
-  r.drift = (solver.positions() - after.points).rowwise().norm().maxCoeff() / diagonal;
+  r.drift = (solver.positions() - solved).rowwise().norm().maxCoeff() / diagonal;
   return r;
 }
 
 // One handle per tip (a part with one docking, not the largest part), at
 // its vertex farthest from its neighbour, moved by 10% of the diagonal
 // across the line from the root; the root's farthest vertices are held.
-void set_tip_handles(const Morphable_part_model& model, const Embedding_problem& problem, Embedding_solver& solver)
+std::vector<int> set_tip_handles(const Morphable_part_model& model, const Embedding_problem& problem,
+                                 Embedding_solver& solver)
 {
   const Training_example& ex = model.examples.front();
   std::vector<int> degree(ex.graph.nodes.size(), 0);
@@ -142,6 +149,7 @@ void set_tip_handles(const Morphable_part_model& model, const Embedding_problem&
   Point_matrix y(targets.size(), 3);
   for(std::size_t k = 0; k < targets.size(); ++k) y.row(k) = targets[k];
   solver.set_handles(vertices, y);
+  return vertices;
 }
 
 // A segment inserted before the tip of every chain (the edge from a tip
@@ -205,7 +213,7 @@ std::string edit_cells(const Edit_result& r)
   std::ostringstream s;
   s << (r.converged ? "yes " : "no ") << r.iterations << " | " << std::setprecision(2) << 100. * r.drift << " | "
     << r.soundness.border_edges << " | "
-    << r.soundness.flipped_faces << " | " << r.new_inverted << " (" << r.unfolded << ") | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
+    << r.soundness.flipped_faces << " | " << r.inverted_before_unfolding << " | " << r.new_inverted << " (" << r.unfolded << ") | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
     << 100. * r.worst_length_change << "% (" << r.parts_outside_range << ")";
   return s.str();
 }
@@ -225,9 +233,9 @@ int main(int argc, char** argv)
       if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | folded faces | new self-int. | Hausdorff % | "
-               "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | new inverted in part (rest folds unfolded) | new self-int. | "
+               "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | inverted in part, solver's result | new inverted in part, written (rest folds unfolded) | new self-int. | "
                "worst length change (parts out of range) |\n"
-               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
   {
     try
@@ -271,9 +279,9 @@ int main(int argc, char** argv)
       for(Edit& e : edits)
       {
         Embedding_solver solver(e.problem);
-        if(e.drag) set_tip_handles(model, e.problem, solver);
+        const std::vector<int> held = e.drag ? set_tip_handles(model, e.problem, solver) : std::vector<int>();
         std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | | | ") << e.name << " | "
-                  << edit_cells(evaluate(model, e.problem, solver, rest, folded)) << " |\n"
+                  << edit_cells(evaluate(model, e.problem, solver, rest, folded, held)) << " |\n"
                   << std::flush;
       }
     }

@@ -22,8 +22,7 @@ using Target_policy = std::function<Part_target(const Part_type& type, const Eig
 // The clusters of example `example` over its own mesh (the construction is
 // shared with assembly, see internal/Part_graph_problem.h).
 Embedding_problem make_problem(const Morphable_part_model& model, int example, const Target_policy& policy,
-                               const std::function<Eigen::VectorXd(const Shape_space&)>& pair_sigmas,
-                               bool unfold_targets)
+                               const std::function<Eigen::VectorXd(const Shape_space&)>& pair_sigmas)
 {
   if(example < 0 || example >= static_cast<int>(model.examples.size()))
     throw Input_error("model", "example " + std::to_string(example),
@@ -31,18 +30,11 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
   const Training_example& ex = model.examples[example];
   // A stitched example (parts corresponded separately) has merged seams.
   const internal::Graph_refinement refined = internal::refine_part_graph(model, ex.graph);
-  Embedding_problem problem = internal::make_part_graph_problem(
+  return internal::make_part_graph_problem(
     model, ex.graph, ex.mesh,
     [&](int node, const Shape_space&, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
         const std::string&) { return policy(model.types[ex.graph.nodes[node].type], coordinates, rest); },
     pair_sigmas, refined.empty() ? nullptr : &refined.nodes, true);
-  // Seam vertices interpolated into a part, and pair targets assembled from
-  // two parts, can still turn faces over next to a seam. (A deformation's
-  // targets are the rest itself: scanned slivers there only look turned.)
-  if(unfold_targets)
-    for(Cluster& c : problem.clusters)
-      c.mean = internal::unfold_target(c.mean, internal::gather_rows(ex.mesh.points, c.vertices), c.triangles);
-  return problem;
 }
 
 } // namespace
@@ -113,7 +105,7 @@ Embedding_problem make_caricature_problem(const Morphable_part_model& model, dou
                                      type.triangles);
     t.sigmas = type.space.sigmas;
     return t;
-  }, learned_sigmas, factor != 1.);
+  }, learned_sigmas);
 }
 
 Embedding_problem make_symmetrization_problem(const Morphable_part_model& model, int example,
@@ -143,7 +135,20 @@ Embedding_problem make_symmetrization_problem(const Morphable_part_model& model,
     }
     t.sigmas = isotropic_sigmas(space, options.relative_sigma);
     return t;
-  }, [&options](const Shape_space& space) { return isotropic_sigmas(space, options.relative_sigma); }, true);
+  }, [&options](const Shape_space& space) { return isotropic_sigmas(space, options.relative_sigma); });
+}
+
+Point_matrix unfold_faces(const Indexed_mesh& rest, const Point_matrix& positions, const std::vector<int>& held)
+{
+  if(positions.rows() != rest.points.rows() || positions.cols() != 3)
+    throw Input_error("unfold_faces", "positions",
+                      "are " + std::to_string(positions.rows()) + " x " + std::to_string(positions.cols()) +
+                        " for a mesh of " + std::to_string(rest.points.rows()) + " vertices");
+  for(int v : held)
+    if(v < 0 || v >= rest.number_of_vertices())
+      throw Input_error("unfold_faces", "held vertex " + std::to_string(v),
+                        "is out of range (the mesh has " + std::to_string(rest.number_of_vertices()) + " vertices)");
+  return internal::unfold_target(positions, rest.points, rest.triangles, held);
 }
 
 } // namespace MPM

@@ -7,8 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <map>
-#include <set>
 
 namespace CGAL {
 namespace MPM {
@@ -16,37 +16,110 @@ namespace internal {
 
 namespace {
 
-// The region grown by one ring of triangles.
-void grow(std::set<int>& region, const std::vector<Triangle>& triangles)
+// Per vertex, its neighbours along the triangles' edges (sorted, unique).
+std::vector<std::vector<int>> neighbours_of(Eigen::Index n, const std::vector<Triangle>& triangles)
 {
-  std::set<int> grown = region;
-  for(const Triangle& t : triangles)
-    if(region.count(t[0]) || region.count(t[1]) || region.count(t[2])) grown.insert(t.begin(), t.end());
-  region.swap(grown);
-}
-
-// The connected pieces of a vertex region (joined by the triangles'
-// edges).
-std::vector<std::set<int>> pieces_of(const std::set<int>& region, const std::vector<Triangle>& triangles)
-{
-  std::map<int, std::set<int>> next;
+  std::vector<std::vector<int>> next{std::size_t(n)};
   for(const Triangle& t : triangles)
     for(int k = 0; k < 3; ++k)
-      if(region.count(t[k]) && region.count(t[(k + 1) % 3])) next[t[k]].insert(t[(k + 1) % 3]), next[t[(k + 1) % 3]].insert(t[k]);
-  std::vector<std::set<int>> pieces;
-  std::set<int> seen;
-  for(int v : region)
-  {
-    if(!seen.insert(v).second) continue;
-    std::set<int> piece{v};
-    std::vector<int> stack{v};
-    while(!stack.empty())
     {
-      const int x = stack.back();
-      stack.pop_back();
-      for(int y : next[x])
-        if(seen.insert(y).second) piece.insert(y), stack.push_back(y);
+      next[std::size_t(t[k])].push_back(t[(k + 1) % 3]);
+      next[std::size_t(t[(k + 1) % 3])].push_back(t[k]);
     }
+  for(std::vector<int>& v : next)
+  {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  }
+  return next;
+}
+
+Eigen::Vector3d normal_of(const Point_matrix& p, const Triangle& t)
+{
+  return (p.row(t[1]) - p.row(t[0])).cross(p.row(t[2]) - p.row(t[0])).transpose();
+}
+
+// Per vertex, the best rotation from `rest` to `target` of the vertices two
+// edges away: the vertex and its first ring are left out so that a vertex
+// pushed through the surface does not sway the rotations its own faces are
+// measured by.
+std::vector<Eigen::Matrix3d> neighbourhood_rotations(const Point_matrix& target, const Point_matrix& rest,
+                                                     const std::vector<std::vector<int>>& next)
+{
+  std::vector<Eigen::Matrix3d> rotations(next.size(), Eigen::Matrix3d::Identity());
+  std::vector<int> stamp(next.size(), -1);
+  std::vector<int> around;
+  for(std::size_t v = 0; v < next.size(); ++v)
+  {
+    around.clear();
+    stamp[v] = int(v);
+    for(int a : next[v]) stamp[std::size_t(a)] = int(v);
+    for(int a : next[v])
+      for(int b : next[std::size_t(a)])
+        if(stamp[std::size_t(b)] != int(v))
+        {
+          stamp[std::size_t(b)] = int(v);
+          around.push_back(b);
+        }
+    if(around.size() < 3) around.insert(around.end(), next[v].begin(), next[v].end());
+    if(around.size() < 3) continue;
+    Eigen::Matrix3Xd from(3, around.size()), to(3, around.size());
+    for(std::size_t i = 0; i < around.size(); ++i)
+    {
+      from.col(Eigen::Index(i)) = rest.row(around[i]).transpose();
+      to.col(Eigen::Index(i)) = target.row(around[i]).transpose();
+    }
+    rotations[v] = Eigen::umeyama(from, to, false).topLeftCorner<3, 3>();
+  }
+  return rotations;
+}
+
+// Faces whose normal points against the rest's for each of their corners'
+// neighbourhood rotations: a fold, not a turn. One rotation for a
+// whole part would count the faces of a joint bent by more than 90 degrees,
+// whose two sides turn apart.
+std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_matrix& rest,
+                                        const std::vector<Triangle>& triangles,
+                                        const std::vector<std::vector<int>>& next)
+{
+  const std::vector<Eigen::Matrix3d> rotation = neighbourhood_rotations(target, rest, next);
+  std::vector<int> inverted;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    const Eigen::Vector3d now = normal_of(target, triangles[f]), before = normal_of(rest, triangles[f]);
+    int against = 0;
+    for(int v : triangles[f]) against += now.dot(rotation[std::size_t(v)] * before) < 0.;
+    if(against == 3) inverted.push_back(int(f));
+  }
+  return inverted;
+}
+
+// The region (a flag per vertex) grown by one ring.
+void grow(std::vector<bool>& region, const std::vector<std::vector<int>>& next)
+{
+  const std::vector<bool> before = region;
+  for(std::size_t v = 0; v < next.size(); ++v)
+    if(before[v])
+      for(int w : next[v]) region[std::size_t(w)] = true;
+}
+
+// The connected pieces of a region.
+std::vector<std::vector<int>> pieces_of(const std::vector<bool>& region, const std::vector<std::vector<int>>& next)
+{
+  std::vector<std::vector<int>> pieces;
+  std::vector<bool> seen(region.size(), false);
+  for(std::size_t v = 0; v < region.size(); ++v)
+  {
+    if(!region[v] || seen[v]) continue;
+    seen[v] = true;
+    std::vector<int> piece{int(v)};
+    for(std::size_t i = 0; i < piece.size(); ++i)
+      for(int w : next[std::size_t(piece[i])])
+        if(region[std::size_t(w)] && !seen[std::size_t(w)])
+        {
+          seen[std::size_t(w)] = true;
+          piece.push_back(w);
+        }
     pieces.push_back(std::move(piece));
   }
   return pieces;
@@ -54,29 +127,33 @@ std::vector<std::set<int>> pieces_of(const std::set<int>& region, const std::vec
 
 // Writes into `result` the rows of `piece` reshaped as rigidly as possible
 // (CGAL's ARAP, rest shape as reference) between the target's positions
-// on the ring of vertices around it. Only the piece and that ring are
-// solved, with the rest aligned on the ring first: ARAP starts from
-// identity rotations, and the ring's rotation is the piece's, not the
-// part's (a fold sits on a joint the target may bend).
-void reshape_piece(const std::set<int>& piece, const Point_matrix& target, const Point_matrix& rest,
-                   const std::vector<Triangle>& triangles, Point_matrix& result)
+// on the ring of vertices around it (and at its held vertices). Only the
+// piece and that ring are solved, with the rest aligned on the ring first:
+// ARAP starts from identity rotations, and the ring's rotation is the
+// piece's, not the part's (a fold sits on a joint the target may bend).
+void reshape_piece(const std::vector<int>& piece, const Point_matrix& target, const Point_matrix& rest,
+                   const std::vector<Triangle>& triangles, const std::vector<std::vector<int>>& next,
+                   const std::vector<bool>& held, Point_matrix& result)
 {
-  std::set<int> patch = piece;
-  grow(patch, triangles);
   std::map<int, int> local;
   std::vector<int> global;
-  for(int v : patch)
-  {
-    local[v] = int(global.size());
-    global.push_back(v);
-  }
+  const auto add = [&](int v) {
+    if(local.emplace(v, int(global.size())).second) global.push_back(v);
+  };
+  for(int v : piece) add(v);
+  for(int v : piece)
+    for(int w : next[std::size_t(v)]) add(w);
+  std::vector<bool> free(global.size(), false);
+  for(int v : piece) free[std::size_t(local[v])] = !held[std::size_t(v)];
   Indexed_mesh sub;
   for(const Triangle& t : triangles)
-    if(patch.count(t[0]) && patch.count(t[1]) && patch.count(t[2]))
-      sub.triangles.push_back({local[t[0]], local[t[1]], local[t[2]]});
+  {
+    const auto a = local.find(t[0]), b = local.find(t[1]), c = local.find(t[2]);
+    if(a != local.end() && b != local.end() && c != local.end()) sub.triangles.push_back({a->second, b->second, c->second});
+  }
   Handle_set ring;
-  for(int v : patch)
-    if(!piece.count(v)) ring.vertices.push_back(local[v]);
+  for(std::size_t i = 0; i < global.size(); ++i)
+    if(!free[i]) ring.vertices.push_back(int(i));
   if(ring.vertices.size() < 3) return; // the whole part folds: nothing to hold it by
   Eigen::Matrix3Xd from(3, ring.vertices.size()), to(3, ring.vertices.size());
   ring.targets.resize(Eigen::Index(ring.vertices.size()), 3);
@@ -103,63 +180,33 @@ void reshape_piece(const std::set<int>& piece, const Point_matrix& target, const
   {
     return; // a piece of the patch without a ring vertex: it keeps the target
   }
-  for(int v : piece) result.row(v) = solved.row(local[v]);
-}
-
-Eigen::Vector3d normal_of(const Point_matrix& p, const Triangle& t)
-{
-  return (p.row(t[1]) - p.row(t[0])).cross(p.row(t[2]) - p.row(t[0])).transpose();
-}
-
-// Faces whose normal points against the rest's once the best rotation of
-// the neighbourhood (two rings around the corners, the corners left out so
-// that a vertex pushed through the surface does not sway its own faces'
-// rotation) is taken out: a fold, not a turn. One rotation for the whole cluster would count the
-// faces of a joint bent by more than 90 degrees, whose two parts turn
-// apart.
-std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_matrix& rest,
-                                        const std::vector<Triangle>& triangles)
-{
-  std::vector<std::set<int>> ring(std::size_t(rest.rows()));
-  for(const Triangle& t : triangles)
-    for(int k = 0; k < 3; ++k) ring[std::size_t(t[k])].insert(t.begin(), t.end());
-  std::vector<int> inverted;
-  for(std::size_t f = 0; f < triangles.size(); ++f)
-  {
-    std::set<int> near, around;
-    for(int v : triangles[f]) near.insert(ring[std::size_t(v)].begin(), ring[std::size_t(v)].end());
-    for(int v : near) around.insert(ring[std::size_t(v)].begin(), ring[std::size_t(v)].end());
-    for(int v : triangles[f]) around.erase(v);
-    Eigen::Matrix3Xd from(3, around.size()), to(3, around.size());
-    Eigen::Index i = 0;
-    for(int v : around)
-    {
-      from.col(i) = rest.row(v).transpose();
-      to.col(i++) = target.row(v).transpose();
-    }
-    const Eigen::Matrix3d rotation = Eigen::umeyama(from, to, false).topLeftCorner<3, 3>();
-    if(normal_of(target, triangles[f]).dot(rotation * normal_of(rest, triangles[f])) < 0.) inverted.push_back(int(f));
-  }
-  return inverted;
+  for(std::size_t i = 0; i < global.size(); ++i)
+    if(free[i]) result.row(global[i]) = solved.row(Eigen::Index(i));
 }
 
 } // namespace
 
-Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest, const std::vector<Triangle>& triangles)
+Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest, const std::vector<Triangle>& triangles,
+                           const std::vector<int>& held)
 {
-  const std::vector<int> inverted = locally_inverted_faces(target, rest, triangles);
+  const std::vector<std::vector<int>> next = neighbours_of(target.rows(), triangles);
+  const std::vector<int> inverted = locally_inverted_faces(target, rest, triangles, next);
   if(inverted.empty()) return target;
-  std::set<int> region;
-  for(int f : inverted) region.insert(triangles[std::size_t(f)].begin(), triangles[std::size_t(f)].end());
+  std::vector<bool> is_held(next.size(), false);
+  for(int v : held) is_held[std::size_t(v)] = true;
+  std::vector<bool> region(next.size(), false);
+  for(int f : inverted)
+    for(int v : triangles[std::size_t(f)]) region[std::size_t(v)] = true;
   Point_matrix best = target;
-  int best_count = static_cast<int>(inverted.size());
+  std::size_t best_count = inverted.size();
   // A ring more each round: the fold's edge needs room to turn back.
   for(int round = 0; round < 4 && best_count > 0; ++round)
   {
-    grow(region, triangles);
+    grow(region, next);
     Point_matrix candidate = target;
-    for(const std::set<int>& fold : pieces_of(region, triangles)) reshape_piece(fold, target, rest, triangles, candidate);
-    const int count = static_cast<int>(locally_inverted_faces(candidate, rest, triangles).size());
+    for(const std::vector<int>& piece : pieces_of(region, next))
+      reshape_piece(piece, target, rest, triangles, next, is_held, candidate);
+    const std::size_t count = locally_inverted_faces(candidate, rest, triangles, next).size();
     if(count < best_count)
     {
       best = candidate;

@@ -8,6 +8,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/Surface_soundness.h>
 
 #include <algorithm>
 #include <array>
@@ -111,6 +112,15 @@ void check_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::
                                        "); nothing written");
 }
 
+// The example's mesh at other positions.
+CGAL::MPM::Indexed_mesh edited_mesh(const CGAL::MPM::Training_example& example, const CGAL::MPM::Point_matrix& points)
+{
+  CGAL::MPM::Indexed_mesh m;
+  m.points = points;
+  m.triangles = example.mesh.triangles;
+  return m;
+}
+
 std::string setting_text(const Json& value)
 {
   return value.is_number() ? format_number(value.get<double>(), 6) : value.dump();
@@ -137,6 +147,11 @@ void print_text_summary(const Editing_command& editing, const Json& s)
             << "  time              set-up " << format_number(s["setup_ms"].get<double>(), 4) << " ms, solve "
             << format_number(s["solve_ms"].get<double>(), 4) << " ms ("
             << format_number(s["ms_per_iteration"].get<double>(), 4) << " ms per iteration)\n"
+            << "  inverted faces    " << s["inverted_faces_solved"].get<int>() << " in the solver's result, "
+            << s["inverted_faces_written"].get<int>() << " written ("
+            << (s["options"]["keep_folds"].get<bool>() ? "--keep-folds"
+                                                       : "unfolded in " + format_number(s["unfold_ms"].get<double>(), 3) + " ms")
+            << ")\n"
             << "  rms displacement  " << format_number(s["rms_displacement"].get<double>(), 4)
             << " of the bounding-box diagonal\n"
             << "Wrote " << s["output"].get<std::string>() << "\n";
@@ -191,18 +206,22 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   const Clock::time_point solve_start = Clock::now();
   const Solve_report report = solver.solve();
   const double solve_ms = milliseconds_since(solve_start);
-  const Point_matrix& result = solver.positions();
-  if(!result.allFinite() || !std::isfinite(report.energy()))
+  if(!solver.positions().allFinite() || !std::isfinite(report.energy()))
     throw Computation_error("the solver produced non-finite positions or energy for example " +
                             std::to_string(example) + " of " + model_path +
                             " (try a smaller --handle-weight or handle offsets)");
+  const Clock::time_point unfold_start = Clock::now();
+  const int folds_solved =
+    static_cast<int>(inverted_faces(edited_mesh(input, solver.positions()), input.mesh, &input.face_labels).size());
+  const Point_matrix result =
+    args.flag("keep-folds") ? solver.positions() : unfold_faces(input.mesh, solver.positions(), handles.vertices);
+  const Indexed_mesh edited = edited_mesh(input, result);
+  const int folds_written = static_cast<int>(inverted_faces(edited, input.mesh, &input.face_labels).size());
+  const double unfold_ms = milliseconds_since(unfold_start);
   check_displacement(input.mesh.points, result, model_path);
 
   context.progress.update("writing " + output, 0.9);
   ensure_parent_directory(output);
-  Indexed_mesh edited;
-  edited.points = result;
-  edited.triangles = input.mesh.triangles;
   const Color_matrix colors = extension == ".ply" ? part_type_colors(input) : Color_matrix();
   write_mesh_file(edited, output, extension == ".ply" ? &colors : nullptr, context.meshes);
   context.progress.done();
@@ -211,6 +230,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   settings["tolerance"] = options.tolerance;
   settings["handle_weight"] = options.handle_weight;
   settings["coupling_weight"] = options.coupling_weight;
+  settings["keep_folds"] = args.flag("keep-folds");
   const Json summary = {
     {"command", editing.name},
     {"model", model_path},
@@ -228,6 +248,9 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
     {"setup_ms", setup_ms},
     {"solve_ms", solve_ms},
     {"ms_per_iteration", report.iterations > 0 ? solve_ms / report.iterations : 0.},
+    {"inverted_faces_solved", folds_solved},
+    {"inverted_faces_written", folds_written},
+    {"unfold_ms", unfold_ms},
     {"rms_displacement", relative_rms_displacement(input.mesh.points, result)},
     {"output", output},
   };
@@ -274,6 +297,8 @@ Command make_editing_command(const Editing_command& editing)
      "handle stiffness relative to the mean elastic stiffness", 0, HUGE_VAL, true},
     {"coupling", 0, Value_kind::real, "W", format_number(defaults.coupling_weight),
      "weight pulling the coordinates of neighbouring same-type parts together", 0, HUGE_VAL},
+    {"keep-folds", 0, Value_kind::flag, "", "off",
+     "write the solver's result as it is; by default faces it turned inside out are unfolded"},
   };
   c.options.insert(c.options.end(), shared.begin(), shared.end());
   c.run = [editing, specs = c.options](const Args& args, Context& context) {

@@ -244,7 +244,7 @@ TEST_F(Cli_editing, SymmetrizeChangesTheShapeNotTheConnectivity)
   ASSERT_EQ(o.status, 0) << o.err;
   const json os = one_object(o);
   EXPECT_EQ(os["options"], json::parse(R"({"relative_sigma": 0.1, "max_iterations": 7, "tolerance": 1e-6,
-                                           "handle_weight": 10.0, "coupling_weight": 0.5})"));
+                                           "handle_weight": 10.0, "coupling_weight": 0.5, "keep_folds": false})"));
   EXPECT_LE(os["iterations"].get<int>(), 7);
   expect_decreasing_energies(os);
 }
@@ -256,7 +256,7 @@ TEST_F(Cli_editing, TextSummaryNamesEveryQuantity)
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("Deformed example 0", 0), 0u) << r.out;
   for(const std::string& key : std::vector<std::string>{"options", "handles           1 (" + h + ")", "iterations", "energy            first",
-                                "residual energy", "ms per iteration", "rms displacement", "Wrote " + path("t.off")})
+                                "residual energy", "ms per iteration", "inverted faces", "rms displacement", "Wrote " + path("t.off")})
     EXPECT_NE(r.out.find(key), std::string::npos) << key << " in\n" << r.out;
 }
 

@@ -3,6 +3,8 @@
 //
 // Unfolding an edit's target: a fold pushed through a tube is taken out
 // around the fold and nowhere else; a tube bent past a half turn is no fold.
+#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Surface_soundness.h>
 #include <CGAL/MPM/internal/Target_unfolding.h>
 
@@ -77,6 +79,23 @@ TEST(Target_unfolding, a_fold_is_taken_out_where_it_is)
   for(int r = 0; r < rings; ++r)
     if(std::abs(r - rings / 2) > 6)
       for(int s = 0; s < sides; ++s) EXPECT_EQ(unfolded.row(r * sides + s), target.row(r * sides + s)) << r << " " << s;
+}
+
+// The public entry for an edit's result: held vertices (handles) stay put,
+// even inside a fold, and bad arguments are refused naming what is wrong.
+TEST(Target_unfolding, an_edit_result_keeps_its_handles)
+{
+  const Indexed_mesh rest = mesh_of(tube(0.));
+  Point_matrix result = rest.points;
+  const int fold = (rings / 2) * sides;
+  result.row(fold) = Eigen::RowVector3d(-1.5 * radius, 0., rest.points(fold, 2));
+  const int handle = fold + 1; // a corner of the folded faces
+  const Point_matrix unfolded = unfold_faces(rest, result, {handle});
+  EXPECT_EQ(unfolded.row(handle), result.row(handle));
+  EXPECT_LT((unfolded.row(fold) - rest.points.row(fold)).norm(), 0.3 * radius);
+  EXPECT_EQ(unfold_faces(rest, rest.points), rest.points);
+  EXPECT_THROW(unfold_faces(rest, result, {int(rest.points.rows())}), Input_error);
+  EXPECT_THROW(unfold_faces(rest, result.topRows(3)), Input_error);
 }
 
 } // namespace

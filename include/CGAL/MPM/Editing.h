@@ -64,6 +64,19 @@ Embedding_problem make_symmetrization_problem(const Morphable_part_model& model,
 /// instead of folding. Factor 1 is the deformation problem itself.
 Embedding_problem make_caricature_problem(const Morphable_part_model& model, double factor, int example = 0);
 
+/// \ingroup PkgMPMRef
+/// An edit's result (`positions`, n x 3, over the triangles of `rest`, the
+/// mesh before the edit) with the folds it made taken out: faces whose
+/// normal points against the rest's once the rotation of their
+/// neighbourhood is taken out (so a bent joint is no fold) are reshaped,
+/// with a ring or two around them, as rigidly as possible (CGAL's ARAP)
+/// between the result's positions around them. The solver's energy does not
+/// forbid such folds: a drag that pushes a segment against its neighbour
+/// can leave a few rings inside the seam turned over. `held` vertices (the
+/// handles) do not move; nothing moves when there is no fold. The
+/// editing commands of `mpm` apply it unless given `--keep-folds`.
+Point_matrix unfold_faces(const Indexed_mesh& rest, const Point_matrix& positions, const std::vector<int>& held = {});
+
 } // namespace MPM
 } // namespace CGAL
 

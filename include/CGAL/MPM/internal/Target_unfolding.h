@@ -12,16 +12,19 @@ namespace MPM {
 namespace internal {
 
 // `target` (n x 3, in any frame) with the faces it turns inside out against
-// `rest` (the same triangles) unfolded: around those faces (and a ring or
+// `rest` (the same triangles; measured against the rotation of each
+// corner's two-ring neighbourhood, so that a bent joint is no fold) unfolded: around those faces (and a ring or
 // two more, grown until no face stays inverted or the region stops
 // improving) the target takes the rest's local shape, placed as rigidly as
 // possible (CGAL's ARAP) between the target's positions around it. An edit
 // asks for such targets when the mean of a part type carries a fold one of
 // its instances does not (a correspondence fold averaged in), or when a
 // caricature doubles a bend past the point where the inside of the joint
-// turns over; the solver would reproduce them faithfully. Returns `target`
-// itself when nothing is inverted.
-Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest, const std::vector<Triangle>& triangles);
+// turns over; the solver would reproduce them faithfully. The same repairs
+// an edit's result (see `unfold_faces()`), whose `held` vertices (handles)
+// stay where they are. Returns `target` itself when nothing is inverted.
+Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest, const std::vector<Triangle>& triangles,
+                           const std::vector<int>& held = {});
 
 } // namespace internal
 } // namespace MPM
