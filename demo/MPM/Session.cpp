@@ -128,7 +128,8 @@ void Solver_thread::run()
         }
         const auto start = std::chrono::steady_clock::now();
         const MPM::Solve_report report = solver->solve();
-        f.positions = solver->positions();
+        f.positions = r.unfold ? MPM::unfold_faces(r.problem->mesh, solver->positions(), r.handle_vertices)
+                               : solver->positions();
         f.ms = milliseconds_since(start);
         f.iterations = report.iterations;
         f.converged = report.converged;
@@ -342,6 +343,7 @@ void Session::post(bool restart)
   r.handle_targets = handle_targets();
   r.arap = arap_;
   r.restart = restart;
+  r.unfold = mode_ != Edit_mode::deform;
   thread_.post(std::move(r));
 }
 

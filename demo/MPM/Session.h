@@ -52,6 +52,9 @@ struct Solve_request
   Point_matrix handle_targets;
   bool arap = false;    ///< also deform with CGAL's ARAP on the same handles
   bool restart = false; ///< start from the rest positions (reset)
+  /// Take the folds out of the result (`unfold_faces()`), as `mpm` does for
+  /// what it writes; not for drags, whose frames it would slow down.
+  bool unfold = false;
 };
 
 /// What the solver thread reports for one request.

@@ -79,7 +79,9 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   EXPECT_EQ(rest.degenerate_faces, 0) << name;
   EXPECT_GE(rest.self_intersections, 0) << name;
   EXPECT_LE(rest.self_intersections, 20) << name; // measured 7-8 (the input has none)
-  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.01) << name; // measured 0.55-0.69%
+  // Measured 0.20% (ant_81), 0.34% (hand_181), 0.55% (octopus_137); 0.55-0.69%
+  // before extremities were covered (cover_missed_points()).
+  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.007) << name;
 
   for(int edit = 0; edit < 2; ++edit)
   {
