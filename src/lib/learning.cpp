@@ -992,7 +992,10 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       for(auto it = which.rbegin(); it != which.rend(); ++it)
       {
         const Segment_ref& r = refs[*it];
-        const std::string own = name + "_label" + std::to_string(r.label);
+        // Labels repeat across meshes: with several, the mesh is named too,
+        // or two meshes' own shapes would be taken for one type.
+        const std::string own = name + (inputs.size() > 1 ? "_mesh" + std::to_string(r.example) : std::string()) +
+                                "_label" + std::to_string(r.label);
         if(options.warning)
           options.warning(inputs[r.example].mesh.source + ": " + label_element(r.label, name) + ": " + why +
                           "; it keeps its own shape as part type " + quoted(own));

@@ -178,4 +178,31 @@ TEST_P(Segmented_meshes, a_segment_inserted_into_a_chain_keeps_the_surface_close
 
 INSTANTIATE_TEST_SUITE_P(Psb, Segmented_meshes, ::testing::Values("hand_181", "octopus_137", "ant_81"));
 
+// Two octopuses learned together: segments that keep their own shape (the
+// thin rings where arms were cut twice, arms no template covers) become
+// types of their own in each mesh. Both meshes have such a segment 3 with
+// other connectivity; the types were both named "tip2_label3" and learning
+// failed ("connectivity differs from label 3 of octopus_124.off").
+TEST(Segmented_meshes_together, own_shapes_of_two_meshes_are_two_types)
+{
+  MPM_REQUIRE_PSB(std::string("octopus_124"));
+  MPM_REQUIRE_PSB(std::string("octopus_126"));
+  std::vector<Training_input> inputs(2);
+  for(std::size_t i = 0; i < 2; ++i)
+  {
+    const std::string name = i == 0 ? "octopus_124" : "octopus_126";
+    inputs[i].mesh = read_labeled_mesh(psb_file(name + ".off"), psb_file(name + ".seg"));
+    inputs[i].annotation = propose_part_types(inputs[i].mesh).annotation;
+  }
+  const Morphable_part_model model = learn_morphable_part_model(inputs);
+  ASSERT_EQ(model.examples.size(), 2u);
+  int own_per_mesh[2] = {0, 0};
+  for(const Part_type& t : model.types)
+    for(int m = 0; m < 2; ++m) own_per_mesh[m] += t.name.find("_mesh" + std::to_string(m) + "_label") != std::string::npos;
+  EXPECT_GT(own_per_mesh[0], 0);
+  EXPECT_GT(own_per_mesh[1], 0);
+  for(const Training_example& ex : model.examples)
+    EXPECT_EQ(check_surface(ex.mesh).border_edges, 0) << ex.name;
+}
+
 } // namespace
