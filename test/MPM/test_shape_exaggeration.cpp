@@ -21,26 +21,7 @@ using namespace CGAL::MPM;
 constexpr int rings = 25, sides = 16;
 constexpr double length = 2., radius = 0.2;
 
-// The tube bent along a circular arc of total angle `angle` (0: straight,
-// along z), lengths along the axis kept.
-Point_matrix bent_tube(double angle)
-{
-  Point_matrix p(rings * sides, 3);
-  for(int r = 0; r < rings; ++r)
-  {
-    const double t = length * r / (rings - 1), phi = angle * t / length;
-    const Eigen::RowVector3d centre =
-      angle == 0. ? Eigen::RowVector3d(0., 0., t)
-                  : Eigen::RowVector3d(0., length / angle * (1. - std::cos(phi)), length / angle * std::sin(phi));
-    const Eigen::RowVector3d across(0., std::cos(phi), -std::sin(phi));
-    for(int s = 0; s < sides; ++s)
-    {
-      const double alpha = 2. * M_PI * s / sides;
-      p.row(r * sides + s) = centre + radius * (std::cos(alpha) * Eigen::RowVector3d::UnitX() + std::sin(alpha) * across);
-    }
-  }
-  return p;
-}
+Point_matrix bent_tube(double angle) { return mpm_test::bent_tube(rings, sides, length, radius, angle); }
 
 // Largest distance after the best rigid alignment of `a` onto `b`.
 double aligned_distance(const Point_matrix& a, const Point_matrix& b)
