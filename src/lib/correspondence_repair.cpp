@@ -1,0 +1,188 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/internal/Correspondence_surface.h>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+namespace correspondence {
+
+// RMS distance of the segment's vertices to the mapped template surface.
+double coverage_residual(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles)
+{
+  std::vector<Kernel::Triangle_3> mapped;
+  for(const Triangle& t : triangles)
+  {
+    const Kernel::Triangle_3 tri(to_point(y.row(t[0])), to_point(y.row(t[1])), to_point(y.row(t[2])));
+    if(!tri.is_degenerate()) mapped.push_back(tri);
+  }
+  if(mapped.empty()) return 1.;
+  Triangle_tree tree(mapped.begin(), mapped.end());
+  tree.accelerate_distance_queries();
+  double sum = 0.;
+  for(Eigen::Index v = 0; v < s.mesh.points.rows(); ++v)
+    sum += tree.squared_distance(to_point(s.mesh.points.row(v)));
+  return std::sqrt(sum / s.mesh.points.rows()) / s.diagonal;
+}
+
+// Mapped template triangles facing against the segment: the normal of the
+// mapped triangle against that of the segment's face nearest to its
+// centroid. Degenerate mapped triangles have no side and are not counted.
+std::vector<int> flipped_faces(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles)
+{
+  std::vector<int> flipped;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    const Triangle& t = triangles[f];
+    const Vec3 a = y.row(t[0]), b = y.row(t[1]), c = y.row(t[2]);
+    const Vec3 n = (b - a).cross(c - a);
+    Vec3 normal;
+    s.closest((a + b + c) / 3., &normal);
+    if(n.dot(normal) < 0) flipped.push_back(static_cast<int>(f));
+  }
+  return flipped;
+}
+
+// Repairs folds of the correspondence: on real segments they sit in the
+// first rings inside a seam, where the boundary vertices are pinned to
+// their arc-length images on a jagged cut and the next ring, pulled to the
+// closest surface points, folds over them. The free vertices of flipped
+// triangles and `rings` rings around them go to the mean of their
+// neighbours and back onto the segment; a pass that removes no fold widens
+// the region (a fold wider than two rings does not open otherwise: on the
+// PSB hands that halved the self-intersections left). The result with
+// fewest flipped triangles is kept. Boundary and landmark vertices stay.
+void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, const std::vector<Triangle>& triangles,
+            Point_matrix& y)
+{
+  std::vector<int> flipped = flipped_faces(s, y, triangles);
+  std::vector<bool> pinned(y.rows(), false);
+  for(Eigen::Index v = 0; v < y.rows(); ++v) pinned[v] = info.loop[v] >= 0;
+  for(const auto& [v, p] : lm.vertex_targets) pinned[v] = true;
+  Point_matrix current = y;
+  int rings = 1;
+  for(int pass = 0; pass < 60 && !flipped.empty(); ++pass)
+  {
+    std::vector<bool> moving(y.rows(), false);
+    for(int f : flipped)
+      for(int v : triangles[f]) moving[v] = true;
+    for(int r = 0; r < rings; ++r)
+    {
+      std::vector<bool> grown = moving;
+      for(Eigen::Index v = 0; v < y.rows(); ++v)
+        if(moving[v])
+          for(int w : info.neighbours[v]) grown[w] = true;
+      moving.swap(grown);
+    }
+    const Point_matrix previous = current;
+    for(Eigen::Index v = 0; v < y.rows(); ++v)
+    {
+      if(!moving[v] || pinned[v] || info.neighbours[v].empty()) continue;
+      Vec3 mean = Vec3::Zero();
+      for(int w : info.neighbours[v]) mean += previous.row(w).transpose();
+      current.row(v) = s.closest(mean / double(info.neighbours[v].size())).transpose();
+    }
+    std::vector<int> now = flipped_faces(s, current, triangles);
+    if(now.size() < flipped.size())
+    {
+      y = current;
+      flipped = std::move(now);
+    }
+    else
+      rings = std::min(rings + 1, 8);
+  }
+}
+
+// Template vertices pulled onto the segment's points that the mapped
+// template misses. Projection takes each template vertex to its closest
+// surface point, which never reaches the apex of a pointed extremity (a
+// finger's pad, a leg's claw): the learned example stopped short of the
+// input there by up to 0.7% of the mesh's diagonal. Farthest point first,
+// the nearest free template vertex moves onto it, unless that turns one of
+// its triangles against the surface; a point more than three edges from
+// every template vertex is a region the fit missed, not an apex, and stays.
+void cover_missed_points(const Surface& s, const Template_info& info, const Landmarks& lm,
+                         const std::vector<Triangle>& triangles, Point_matrix& y)
+{
+  const Eigen::Index n = y.rows();
+  std::vector<bool> fixed(std::size_t(n), false);
+  for(Eigen::Index v = 0; v < n; ++v) fixed[v] = info.loop[v] >= 0 || info.neighbours[v].empty();
+  for(const auto& [v, p] : lm.vertex_targets) fixed[v] = true;
+  std::vector<std::vector<int>> faces_of{std::size_t(n)};
+  double edge = 0.;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      faces_of[std::size_t(triangles[f][k])].push_back(int(f));
+      edge += (y.row(triangles[f][k]) - y.row(triangles[f][(k + 1) % 3])).norm();
+    }
+  if(triangles.empty()) return;
+  edge /= 3. * double(triangles.size());
+  const auto faces_the_surface = [&](int v) {
+    for(int f : faces_of[std::size_t(v)])
+    {
+      const Triangle& t = triangles[std::size_t(f)];
+      const Vec3 a = y.row(t[0]), b = y.row(t[1]), c = y.row(t[2]);
+      Vec3 normal;
+      s.closest((a + b + c) / 3., &normal);
+      if((b - a).cross(c - a).dot(normal) <= 0.) return false;
+    }
+    return true;
+  };
+  for(int pass = 0; pass < 8; ++pass)
+  {
+    std::vector<Kernel::Triangle_3> mapped;
+    for(const Triangle& t : triangles)
+    {
+      const Kernel::Triangle_3 tri(to_point(y.row(t[0])), to_point(y.row(t[1])), to_point(y.row(t[2])));
+      if(!tri.is_degenerate()) mapped.push_back(tri);
+    }
+    if(mapped.empty()) return;
+    Triangle_tree tree(mapped.begin(), mapped.end());
+    tree.accelerate_distance_queries();
+    std::vector<std::pair<double, int>> missed;
+    for(Eigen::Index p = 0; p < s.mesh.points.rows(); ++p)
+    {
+      const double d = std::sqrt(tree.squared_distance(to_point(s.mesh.points.row(p))));
+      if(d > 0.5 * edge) missed.emplace_back(d, int(p));
+    }
+    std::sort(missed.rbegin(), missed.rend());
+    std::vector<Vec3> covered; // points moved onto in this pass
+    for(const auto& [d, p] : missed)
+    {
+      const Vec3 q = s.mesh.points.row(p).transpose();
+      if(std::any_of(covered.begin(), covered.end(), [&](const Vec3& c) { return (c - q).norm() < 2. * edge; })) continue;
+      int nearest = -1;
+      for(Eigen::Index v = 0; v < n; ++v)
+        if(!fixed[v] && (nearest < 0 || (y.row(v).transpose() - q).norm() < (y.row(nearest).transpose() - q).norm()))
+          nearest = int(v);
+      if(nearest < 0 || (y.row(nearest).transpose() - q).norm() > 3. * edge) continue;
+      const Point_matrix before = y;
+      y.row(nearest) = q.transpose();
+      // Its neighbours follow halfway, so that its triangles do not become slivers.
+      for(int relax = 0; relax < 2; ++relax)
+        for(int w : info.neighbours[std::size_t(nearest)])
+        {
+          if(fixed[std::size_t(w)]) continue;
+          Vec3 mean = Vec3::Zero();
+          for(int x : info.neighbours[std::size_t(w)]) mean += y.row(x).transpose();
+          y.row(w) = s.closest(mean / double(info.neighbours[std::size_t(w)].size())).transpose();
+        }
+      bool sound = faces_the_surface(nearest);
+      for(int w : info.neighbours[std::size_t(nearest)]) sound = sound && faces_the_surface(w);
+      if(!sound)
+      {
+        y = before;
+        continue;
+      }
+      fixed[nearest] = true;
+      covered.push_back(q);
+    }
+    if(covered.empty()) return;
+  }
+}
+
+} // namespace correspondence
+} // namespace internal
+} // namespace MPM
+} // namespace CGAL
