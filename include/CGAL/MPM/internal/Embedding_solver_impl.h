@@ -1,0 +1,238 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_INTERNAL_EMBEDDING_SOLVER_IMPL_H
+#define CGAL_MPM_INTERNAL_EMBEDDING_SOLVER_IMPL_H
+
+// The state of `Embedding_solver` shared by its sources: set-up and
+// factorization (embedding_solver_setup.cpp), the local and global steps
+// and energies (embedding_solver_steps.cpp), the iterations and the public
+// API (embedding_solver.cpp), and the factored vertex block
+// (vertex_block_solver.cpp).
+
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/internal/Rotation_lbfgs.h>
+
+#include <Eigen/Core>
+#include <Eigen/SVD>
+#include <Eigen/SparseCore>
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+namespace embedding {
+
+using Sparse = Eigen::SparseMatrix<double>;
+
+// The constant vertex block is factored through CGAL's solver traits, so any
+// Eigen-compatible direct solver plugs in the same way.
+class Vertex_block_solver
+{
+public:
+  virtual ~Vertex_block_solver() = default;
+  virtual bool factor(const Sparse& a) = 0;
+  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) = 0;
+  // After a failed factor(): the row with the smallest pivot, or -1 when the
+  // solver does not tell.
+  virtual int weakest_row() const { return -1; }
+};
+
+// LDLT factors an indefinite matrix without complaint (LLT refuses it): the
+// pivots say whether the matrix was positive definite, and where not.
+template <class Ldlt>
+int non_positive_pivot_row(const Ldlt& ldlt)
+{
+  const Eigen::VectorXd& pivots = ldlt.vectorD();
+  Eigen::Index weakest = 0;
+  if(pivots.size() == 0) return -1;
+  for(Eigen::Index i = 0; i < pivots.size(); ++i)
+    if(!(pivots[i] >= pivots[weakest])) weakest = i;
+  if(pivots[weakest] > 0) return -1;
+  return ldlt.permutationPinv().indices()[weakest];
+}
+
+// The factored vertex block of `which` kind (see vertex_block_solver.cpp).
+std::unique_ptr<Vertex_block_solver> make_vertex_block_solver(Sparse_solver which);
+
+// Closest rotation (no reflection) to a 3x3 matrix, maximizing <R, k>.
+inline Eigen::Matrix3d closest_rotation(const Eigen::Matrix3d& k)
+{
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(k, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  if((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0) d(2, 2) = -1;
+  return svd.matrixU() * d * svd.matrixV().transpose();
+}
+
+struct Weighted_edge
+{
+  int i, j;
+  double w;
+};
+
+struct Cluster_data
+{
+  std::string name;
+  std::vector<int> vertices;
+  std::vector<Weighted_edge> edges;   // weights include sigma_sub^-2 and the blend
+  Sparse laplacian;                   // local, n_c x n_c
+  Point_matrix mean;
+  std::vector<Point_matrix> modes;    // n_c x 3 each
+  Eigen::VectorXd prior;              // 1 / (4 sigma_k^2)
+  Point_matrix laplacian_mean;        // L M
+  std::vector<Point_matrix> laplacian_modes; // L B_k
+  int offset = 0;                     // of its coordinates in the stacked vector
+  int number_of_modes() const { return static_cast<int>(modes.size()); }
+};
+
+// <a, b^T>: the trace of a b.
+inline double trace_product(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a.array() * b.transpose().array()).sum(); }
+
+} // namespace embedding
+} // namespace internal
+
+struct Embedding_solver::Impl
+{
+  using Sparse = internal::embedding::Sparse;
+  using Cluster_data = internal::embedding::Cluster_data;
+  using Weighted_edge = internal::embedding::Weighted_edge;
+  using Vertex_block_solver = internal::embedding::Vertex_block_solver;
+
+  Embedding_options options;
+  Indexed_mesh mesh;
+  int n = 0;
+  std::vector<Cluster_data> clusters;
+  int total_modes = 0;
+  Sparse elastic;                 // sum of cluster Laplacians, n x n
+  double mean_diagonal = 1.;
+  std::vector<int> component;     // connected piece of each vertex (through cluster edges)
+
+  // Handles.
+  std::vector<int> handle_vertices;
+  Point_matrix handle_targets;
+  bool factored = false;
+  // A change of handle vertices that keeps the handled pieces is a low-rank
+  // (Woodbury) update of the factored block: A = A_f + U diag(w) U^T with U
+  // the changed vertices, A^-1 = A_f^-1 - C K^-1 C^T, C = A_f^-1 U,
+  // K = diag(1/w) + U^T C.
+  std::vector<int> factored_handles;
+  std::vector<int> update_vertices;
+  Eigen::VectorXd update_weights;
+  Eigen::MatrixXd update_columns;      // C, n x k
+  Eigen::MatrixXd capacitance_inverse; // K^-1
+  std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base; // blocks of A_f
+  bool handle_terms_ready = false;
+  Eigen::VectorXd anchor;         // per-vertex anchor weight
+  Sparse system;                  // A11
+  std::unique_ptr<Vertex_block_solver> solver;
+
+  // Schur blocks, 3x3 each: H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d,
+  // Gz[ck] = (L_c B_ck)^T Z, with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
+  std::vector<Eigen::Matrix3d> h_blocks, g_blocks, z_blocks;
+  Eigen::MatrixXd coupling;       // coupled-coordinates term, total_modes x total_modes
+  Eigen::MatrixXd mode_gram;      // <B_ck, L_c B_cl>, block diagonal
+  Eigen::VectorXd mean_energy;    // <M_c, L_c M_c> per cluster
+  // For the reduced step, with X_c = L_c (M_c + sum_k lambda_ck B_ck):
+  // plm[d][c] = P_d^T L_c M_c, qlm[dl][c] = Q_dl^T L_c M_c, zlm[c] = Z^T L_c M_c,
+  // so that W[c][d] = X_c^T A11^-1 X_d is a short sum of blocks.
+  std::vector<Eigen::Matrix3d> plm_blocks, qlm_blocks, zlm_blocks;
+  double handle_constant = 0.;    // sum w_h |y_h|^2 + anchors
+  double b0_z = 0.;               // <b0, Z>
+  Eigen::MatrixXd s0;             // constant part of the Schur complement
+  Eigen::VectorXd r0;             // constant part of its right-hand side
+  Point_matrix b0;                // handle and anchor right-hand side
+  std::vector<int> cluster_of_mode;
+
+  // State. With the reduced step, positions are implicit (A11^-1 b(R, lambda))
+  // until asked for; `w_blocks` then holds W for the current coordinates.
+  bool implicit = false;
+  bool positions_valid = true;
+  // Everything is solved relative to the rest centroid, which keeps the
+  // handle constants (and so the rounding of reduced energies) small.
+  Eigen::RowVector3d origin;
+  Point_matrix world_positions;
+  std::vector<Eigen::Matrix3d> w_blocks;
+  Point_matrix positions;
+  Eigen::VectorXd coordinates;
+  std::vector<Eigen::Matrix3d> rotations;
+  std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations; // per cluster point, with Rotations::per_vertex
+  int iterations_since_reset = 0;
+  Iteration_timings timings; // of the last iterate()
+
+  Impl(const Embedding_problem& problem, const Embedding_options& o);
+  void prepare_cluster(const Cluster& c, double sigma_sub, int index);
+  void compute_anchor();
+  void factor();
+  bool update_handle_set(const std::vector<int>& vertices);
+  void apply_update();
+  Eigen::MatrixXd solve_a11(const Eigen::MatrixXd& rhs) const;
+  void prepare_handle_terms();
+  Eigen::MatrixXd scatter(const Cluster_data& c, const Point_matrix& local) const;
+  Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
+  Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
+  void local_step();
+  Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
+  Eigen::Matrix3d fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const;
+  void start_at_rigid_fit_of_handles();
+  Eigen::VectorXd packed_state() const;
+  double enter_state(const Eigen::VectorXd& x);
+  bool take_if_lower(const Eigen::VectorXd& candidate, const Eigen::VectorXd& plain, double& energy);
+  void check_not_diverging(double e, double best, int& rises, int iteration);
+  void reduced_local_step();
+  Eigen::VectorXd rotation_gradient() const;
+  double settle_at_rotations(Iteration_timings* timings = nullptr);
+  double quasi_newton_improve(internal::Rotation_lbfgs& lbfgs, const std::vector<Eigen::Matrix3d>& start,
+                              double start_energy, Eigen::VectorXd& gradient, double energy, bool try_step);
+  Eigen::VectorXd solve_coordinates() const;
+  Eigen::MatrixXd positions_rhs(const Eigen::VectorXd& lambda) const;
+  Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
+  std::vector<Eigen::Matrix3d> w_of(const Eigen::VectorXd& lambda) const;
+  double reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const;
+  const Point_matrix& materialized_positions();
+  void global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda);
+  double energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only = -1) const;
+  void check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
+  [[noreturn]] void fail_on_non_finite_energy(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
+  std::string largest_energy_term(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
+
+  // Everything iterating changes, so that a failed solve leaves the state it found.
+  struct State
+  {
+    Point_matrix positions;
+    Eigen::VectorXd coordinates;
+    std::vector<Eigen::Matrix3d> rotations, w_blocks;
+    std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations;
+    bool implicit = false, positions_valid = true;
+    int iterations_since_reset = 0;
+  };
+  State save() const
+  {
+    return {positions, coordinates, rotations, w_blocks, vertex_rotations, implicit, positions_valid, iterations_since_reset};
+  }
+  void restore(State s)
+  {
+    positions = std::move(s.positions);
+    coordinates = std::move(s.coordinates);
+    rotations = std::move(s.rotations);
+    w_blocks = std::move(s.w_blocks);
+    vertex_rotations = std::move(s.vertex_rotations);
+    implicit = s.implicit;
+    positions_valid = s.positions_valid;
+    iterations_since_reset = s.iterations_since_reset;
+  }
+  // The energy of one handle a bounding-box diagonal away from its target:
+  // the unit below which energy changes are rounding, not divergence.
+  double energy_unit() const
+  {
+    const double diagonal = n > 0 ? (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).norm() : 1.;
+    return options.handle_weight * mean_diagonal * std::max(diagonal * diagonal, std::numeric_limits<double>::min());
+  }
+};
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,485 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/internal/Embedding_solver_impl.h>
+
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Edge_graph_distance.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Weights/utils.h>
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+namespace CGAL {
+namespace MPM {
+
+using namespace internal::embedding;
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+
+Kernel::Point_3 point(const Point_matrix& p, int i) { return Kernel::Point_3(p(i, 0), p(i, 1), p(i, 2)); }
+
+} // namespace
+
+Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_options& o)
+  : options(o), mesh(problem.mesh), n(problem.mesh.number_of_vertices())
+{
+  origin = n > 0 ? Eigen::RowVector3d(mesh.points.colwise().mean()) : Eigen::RowVector3d::Zero();
+  mesh.points.rowwise() -= origin;
+  if(!(problem.sigma_sub > 0) || !std::isfinite(problem.sigma_sub))
+    throw Input_error("embedding problem", "sigma_sub", "must be positive and finite");
+  // A negative weight makes the system indefinite and the energy unbounded.
+  const auto require = [](bool ok, const std::string& option, double value, const std::string& rule) {
+    if(!ok) throw Input_error("embedding options", option, "must be " + rule + " (got " + std::to_string(value) + ")");
+  };
+  require(o.handle_weight > 0 && std::isfinite(o.handle_weight), "handle_weight", o.handle_weight, "positive and finite");
+  require(o.anchor_weight >= 0 && std::isfinite(o.anchor_weight), "anchor_weight", o.anchor_weight, "non-negative and finite");
+  require(o.coupling_weight >= 0 && std::isfinite(o.coupling_weight), "coupling_weight", o.coupling_weight,
+          "non-negative and finite");
+  require(o.tolerance >= 0 && std::isfinite(o.tolerance), "tolerance", o.tolerance, "non-negative and finite");
+  require(o.max_iterations >= 0, "max_iterations", o.max_iterations, "non-negative");
+  require(o.anderson_history >= 0, "anderson_history", o.anderson_history, "non-negative");
+  if(!problem.mesh.points.allFinite())
+    throw Input_error("embedding problem", "rest positions", "contain non-finite coordinates");
+  for(std::size_t c = 0; c < problem.clusters.size(); ++c)
+    prepare_cluster(problem.clusters[c], problem.sigma_sub, static_cast<int>(c));
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.laplacian.outerSize(); ++k)
+      for(Sparse::InnerIterator it(c.laplacian, k); it; ++it)
+        triplets.emplace_back(c.vertices[it.row()], c.vertices[it.col()], it.value());
+  elastic.resize(n, n);
+  elastic.setFromTriplets(triplets.begin(), triplets.end());
+  double sum = 0.;
+  int count = 0;
+  for(int i = 0; i < n; ++i)
+    if(elastic.coeff(i, i) > 0)
+    {
+      sum += elastic.coeff(i, i);
+      ++count;
+    }
+  mean_diagonal = count > 0 ? sum / count : 1.;
+
+  std::vector<int> rank(n), parent(n);
+  boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
+  for(int v = 0; v < n; ++v) sets.make_set(v);
+  for(const Cluster_data& c : clusters)
+    for(const Weighted_edge& e : c.edges) sets.union_set(c.vertices[e.i], c.vertices[e.j]);
+  component.resize(n);
+  for(int v = 0; v < n; ++v) component[v] = sets.find_set(v);
+
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k) cluster_of_mode.push_back(static_cast<int>(&c - clusters.data()));
+
+  coupling = Eigen::MatrixXd::Zero(total_modes, total_modes);
+  for(const auto& [a, b] : problem.coupled_clusters)
+  {
+    if(a < 0 || b < 0 || a >= int(clusters.size()) || b >= int(clusters.size()) || a == b ||
+       clusters[a].number_of_modes() != clusters[b].number_of_modes())
+      throw Input_error("embedding problem", "coupled clusters (" + std::to_string(a) + ", " + std::to_string(b) + ")",
+                        "must be two distinct clusters with the same number of modes");
+    const Cluster_data& ca = clusters[a];
+    const Cluster_data& cb = clusters[b];
+    for(int k = 0; k < ca.number_of_modes(); ++k)
+    {
+      const double w = options.coupling_weight * 0.5 * (ca.prior[k] + cb.prior[k]);
+      coupling(ca.offset + k, ca.offset + k) += w;
+      coupling(cb.offset + k, cb.offset + k) += w;
+      coupling(ca.offset + k, cb.offset + k) -= w;
+      coupling(cb.offset + k, ca.offset + k) -= w;
+    }
+  }
+
+  // Per-vertex rotations have no rotation-commuting structure to exploit.
+  if(options.rotations == Rotations::per_vertex) options.global_step = Global_step::direct;
+  positions = mesh.points;
+  coordinates = Eigen::VectorXd::Zero(total_modes);
+  rotations.assign(clusters.size(), Eigen::Matrix3d::Identity());
+  if(options.rotations == Rotations::per_vertex)
+    for(const Cluster_data& c : clusters) vertex_rotations.emplace_back(c.vertices.size(), Eigen::Matrix3d::Identity());
+  compute_anchor();
+  local_step();
+}
+
+void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub, int index)
+{
+  const std::string name = c.name.empty() ? "cluster " + std::to_string(index) : c.name;
+  const int nc = static_cast<int>(c.vertices.size());
+  const auto fail = [&](const std::string& what) { throw Input_error("embedding problem", name, what); };
+  if(c.mean.rows() != nc) fail("mean has " + std::to_string(c.mean.rows()) + " points for " + std::to_string(nc) + " vertices");
+  if(!c.mean.allFinite()) fail("mean has non-finite coordinates");
+  if(c.modes.rows() != 3 * nc && c.modes.cols() > 0) fail("modes have the wrong size");
+  if(c.sigmas.size() != c.modes.cols()) fail("one standard deviation per mode is needed");
+  for(int k = 0; k < c.sigmas.size(); ++k)
+    if(!(c.sigmas[k] > 0) || !std::isfinite(c.sigmas[k])) fail("standard deviation " + std::to_string(k) + " is not positive");
+  for(int v : c.vertices)
+    if(v < 0 || v >= n) fail("vertex " + std::to_string(v) + " is out of range");
+  for(const Cluster_edge& e : c.edges)
+    if(e.source < 0 || e.source >= nc || e.target < 0 || e.target >= nc || e.source == e.target)
+      fail("edge (" + std::to_string(e.source) + ", " + std::to_string(e.target) + ") is invalid");
+  for(const Triangle& t : c.triangles)
+    for(int k = 0; k < 3; ++k)
+      if(t[k] < 0 || t[k] >= nc) fail("triangle corner out of range");
+
+  Cluster_data d;
+  d.name = name;
+  d.vertices = c.vertices;
+  d.mean = c.mean;
+
+  // Cotangent weights measured on the mean: half the cotangent of the
+  // opposite angle per adjacent triangle. Negative ones are clamped (to a
+  // small fraction of the mean weight) so that the matrix stays positive
+  // definite and no edge is left without stiffness. Large ones are bounded
+  // as CGAL's clamped cotangent bounds them (cosine within +-0.999, as in
+  // its ARAP deformation): a sliver of a scanned mesh (cotangent 4e14 on a
+  // PSB octopus) otherwise drowned the whole system in rounding, and the
+  // energy rose from the rest pose.
+  const double largest_cotangent = 0.999 / std::sqrt(1. - 0.999 * 0.999);
+  std::map<std::pair<int, int>, double> cotangent;
+  for(const Triangle& t : c.triangles)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3], o = t[(k + 2) % 3];
+      const double cot = CGAL::Weights::cotangent(point(c.mean, a), point(c.mean, o), point(c.mean, b));
+      cotangent[{std::min(a, b), std::max(a, b)}] += std::isfinite(cot) ? 0.5 * std::min(cot, largest_cotangent) : 0.;
+    }
+  double positive_sum = 0.;
+  int positive_count = 0;
+  for(const auto& [e, w] : cotangent)
+    if(w > 0)
+    {
+      positive_sum += w;
+      ++positive_count;
+    }
+  const double floor_weight = 1e-2 * (positive_count > 0 ? positive_sum / positive_count : 1.);
+
+  std::vector<double> blend(nc, 1.);
+  if(!c.border.empty())
+  {
+    double sigma_bound = c.sigma_bound;
+    if(!(sigma_bound > 0))
+      sigma_bound = (c.mean.colwise().maxCoeff() - c.mean.colwise().minCoeff()).norm() / 3.;
+    const std::vector<double> distance = internal::edge_graph_distances(c.mean, c.edges, c.border);
+    for(int v = 0; v < nc; ++v)
+      blend[v] = std::isfinite(distance[v]) ? 1. - std::exp(-distance[v] * distance[v] / (sigma_bound * sigma_bound)) : 1.;
+  }
+  const double inverse_variance = 1. / (sigma_sub * sigma_sub);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for(const Cluster_edge& e : c.edges)
+  {
+    double w = 1.; // uniform on virtual and non-manifold edges
+    const auto it = cotangent.find({std::min(e.source, e.target), std::max(e.source, e.target)});
+    if(!e.is_virtual && it != cotangent.end()) w = std::max(it->second, floor_weight);
+    // The blend fades a cluster toward its border, but never to exactly zero.
+    w *= std::max(0.5 * (blend[e.source] + blend[e.target]), 1e-3) * inverse_variance;
+    d.edges.push_back({e.source, e.target, w});
+    triplets.emplace_back(e.source, e.source, w);
+    triplets.emplace_back(e.target, e.target, w);
+    triplets.emplace_back(e.source, e.target, -w);
+    triplets.emplace_back(e.target, e.source, -w);
+  }
+  d.laplacian.resize(nc, nc);
+  d.laplacian.setFromTriplets(triplets.begin(), triplets.end());
+  d.laplacian_mean = d.laplacian * d.mean;
+  for(int k = 0; k < c.modes.cols(); ++k)
+  {
+    Point_matrix b(nc, 3);
+    for(int i = 0; i < nc; ++i) b.row(i) = c.modes.col(k).segment<3>(3 * i).transpose();
+    d.laplacian_modes.push_back(d.laplacian * b);
+    d.modes.push_back(std::move(b));
+  }
+  d.prior = (0.25 * c.sigmas.array().square().inverse()).matrix();
+  d.offset = total_modes;
+  total_modes += c.modes.cols();
+  clusters.push_back(std::move(d));
+}
+
+Eigen::MatrixXd Embedding_solver::Impl::scatter(const Cluster_data& c, const Point_matrix& local) const
+{
+  Eigen::MatrixXd global = Eigen::MatrixXd::Zero(n, 3);
+  for(std::size_t i = 0; i < c.vertices.size(); ++i) global.row(c.vertices[i]) += local.row(i);
+  return global;
+}
+
+Eigen::MatrixXd Embedding_solver::Impl::gather(const Cluster_data& c, const Eigen::MatrixXd& global) const
+{
+  Eigen::MatrixXd local(c.vertices.size(), global.cols());
+  for(std::size_t i = 0; i < c.vertices.size(); ++i) local.row(i) = global.row(c.vertices[i]);
+  return local;
+}
+
+Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const
+{
+  Point_matrix m = c.mean;
+  for(int k = 0; k < c.number_of_modes(); ++k) m += lambda[c.offset + k] * c.modes[k];
+  return m;
+}
+
+// Pieces no handle reaches are anchored weakly to the rest positions: the
+// energy is blind to their translation and rotation. One vertex per piece,
+// the one nearest its rest centroid, fixes the translation and pulls on
+// nothing else. Anchoring every vertex also pulled the piece's orientation
+// back toward rest, ever more weakly: an edit that turns parts (symmetrize)
+// then crept for a hundred iterations after its shape had settled.
+void Embedding_solver::Impl::compute_anchor()
+{
+  std::vector<bool> held(n, false);
+  for(int v : handle_vertices) held[component[v]] = true;
+  std::map<int, std::pair<Eigen::RowVector3d, int>> centroid; // per free piece: sum of points, count
+  for(int v = 0; v < n; ++v)
+    if(!held[component[v]])
+    {
+      auto& [sum, count] = centroid.try_emplace(component[v], Eigen::RowVector3d::Zero(), 0).first->second;
+      sum += mesh.points.row(v);
+      ++count;
+    }
+  std::map<int, int> nearest;
+  for(int v = 0; v < n; ++v)
+  {
+    const auto it = centroid.find(component[v]);
+    if(it == centroid.end()) continue;
+    const Eigen::RowVector3d c = it->second.first / it->second.second;
+    const auto [best, added] = nearest.try_emplace(component[v], v);
+    if(!added && (mesh.points.row(v) - c).squaredNorm() < (mesh.points.row(best->second) - c).squaredNorm())
+      best->second = v;
+  }
+  // The weight of the piece's vertices together, so that the system is as
+  // well conditioned as with every vertex anchored.
+  anchor = Eigen::VectorXd::Zero(n);
+  for(const auto& [piece, v] : nearest)
+    anchor[v] = options.anchor_weight * mean_diagonal * centroid.at(piece).second;
+}
+
+void Embedding_solver::Impl::factor()
+{
+  const double handle_weight = options.handle_weight * mean_diagonal;
+
+  system = elastic;
+  for(int v = 0; v < n; ++v) system.coeffRef(v, v) += anchor[v];
+  for(int v : handle_vertices) system.coeffRef(v, v) += handle_weight;
+  system.makeCompressed();
+  solver = make_vertex_block_solver(options.sparse_solver);
+  if(!solver->factor(system))
+  {
+    const int row = solver->weakest_row();
+    std::string where = "a cluster may be degenerate";
+    for(const Cluster_data& c : clusters)
+      if(row >= 0 && std::find(c.vertices.begin(), c.vertices.end(), row) != c.vertices.end())
+      {
+        where = "at vertex " + std::to_string(row) + " of " + c.name;
+        break;
+      }
+    throw Computation_error("embedding: the vertex block is not positive definite (" + where + ")");
+  }
+  factored = true;
+  handle_terms_ready = false;
+  factored_handles = handle_vertices;
+  update_vertices.clear();
+  update_weights.resize(0);
+  update_columns.resize(n, 0);
+
+  if(options.global_step == Global_step::direct) return;
+  const int dm = total_modes, nc = static_cast<int>(clusters.size());
+  mode_gram = Eigen::MatrixXd::Zero(dm, dm);
+  mean_energy.resize(nc);
+  r0 = Eigen::VectorXd::Zero(dm);
+  for(const Cluster_data& c : clusters)
+  {
+    mean_energy[&c - clusters.data()] = (c.mean.array() * c.laplacian_mean.array()).sum();
+    for(int k = 0; k < c.number_of_modes(); ++k)
+    {
+      for(int l = 0; l < c.number_of_modes(); ++l)
+        mode_gram(c.offset + k, c.offset + l) = (c.modes[k].array() * c.laplacian_modes[l].array()).sum();
+      r0[c.offset + k] = -(c.modes[k].array() * c.laplacian_mean.array()).sum();
+    }
+  }
+  s0 = mode_gram + coupling;
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k) s0(c.offset + k, c.offset + k) += c.prior[k];
+  h_blocks.assign(std::size_t(dm) * dm, Eigen::Matrix3d::Zero());
+  g_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
+  qlm_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
+  plm_blocks.assign(std::size_t(nc) * nc, Eigen::Matrix3d::Zero());
+  // Right-hand sides are solved in batches to bound memory on large models.
+  const int columns = dm + nc;
+  const int batch = 16;
+  for(int first = 0; first < columns; first += batch)
+  {
+    const int count = std::min(batch, columns - first);
+    Eigen::MatrixXd rhs(n, 3 * count);
+    for(int j = 0; j < count; ++j)
+    {
+      const int column = first + j;
+      if(column < dm)
+      {
+        const Cluster_data& d = clusters[cluster_of_mode[column]];
+        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset]);
+      }
+      else
+        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean);
+    }
+    const Eigen::MatrixXd solved = solver->solve(rhs); // of A_f: the update is applied below
+    for(const Cluster_data& c : clusters)
+    {
+      const int ci = static_cast<int>(&c - clusters.data());
+      const Eigen::MatrixXd local = gather(c, solved);
+      for(int j = 0; j < count; ++j)
+      {
+        const int column = first + j;
+        const Eigen::Matrix3d with_mean = local.middleCols<3>(3 * j).transpose() * c.laplacian_mean;
+        if(column < dm) qlm_blocks[std::size_t(column) * nc + ci] = with_mean;
+        else plm_blocks[std::size_t(column - dm) * nc + ci] = with_mean;
+        for(int k = 0; k < c.number_of_modes(); ++k)
+        {
+          const Eigen::Matrix3d block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
+          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = block;
+          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = block;
+        }
+      }
+    }
+  }  h_base = h_blocks;
+  g_base = g_blocks;
+  plm_base = plm_blocks;
+  qlm_base = qlm_blocks;
+}
+
+Eigen::MatrixXd Embedding_solver::Impl::solve_a11(const Eigen::MatrixXd& rhs) const
+{
+  Eigen::MatrixXd x = solver->solve(rhs);
+  if(!update_vertices.empty())
+  {
+    Eigen::MatrixXd at_updates(update_vertices.size(), x.cols());
+    for(std::size_t u = 0; u < update_vertices.size(); ++u) at_updates.row(u) = x.row(update_vertices[u]);
+    x -= update_columns * (capacitance_inverse * at_updates);
+  }
+  return x;
+}
+
+// Accepts `vertices` as a low-rank change of the factored handle set when the
+// same pieces stay handled and few vertices change; false asks for a refactorization.
+bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
+{
+  constexpr std::size_t max_update = 32;
+  if(!factored) return false;
+  const auto pieces = [&](const std::vector<int>& h) {
+    std::set<int> p;
+    for(int v : h) p.insert(component[v]);
+    return p;
+  };
+  if(pieces(vertices) != pieces(factored_handles)) return false;
+  const std::set<int> now(vertices.begin(), vertices.end()), before(factored_handles.begin(), factored_handles.end());
+  std::vector<int> changed;
+  std::vector<double> weights;
+  const double w = options.handle_weight * mean_diagonal;
+  for(int v : now)
+    if(!before.count(v))
+    {
+      changed.push_back(v);
+      weights.push_back(w);
+    }
+  for(int v : before)
+    if(!now.count(v))
+    {
+      changed.push_back(v);
+      weights.push_back(-w);
+    }
+  if(changed.size() > max_update) return false;
+  update_vertices = changed;
+  update_weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), weights.size());
+  apply_update();
+  return true;
+}
+
+void Embedding_solver::Impl::apply_update()
+{
+  const int k = static_cast<int>(update_vertices.size());
+  if(k == 0)
+  {
+    update_columns.resize(n, 0);
+    h_blocks = h_base;
+    g_blocks = g_base;
+    plm_blocks = plm_base;
+    qlm_blocks = qlm_base;
+    return;
+  }
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, k);
+  for(int u = 0; u < k; ++u) unit(update_vertices[u], u) = 1.;
+  update_columns = solver->solve(unit);
+  Eigen::MatrixXd capacitance(k, k);
+  for(int u = 0; u < k; ++u) capacitance.row(u) = update_columns.row(update_vertices[u]);
+  capacitance.diagonal() += update_weights.cwiseInverse();
+  capacitance_inverse = capacitance.inverse();
+  if(options.global_step == Global_step::direct) return;
+
+  // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
+  // X^T A^-1 Y = X^T A_f^-1 Y - T_X^T K^-1 T_Y.
+  const int dm = total_modes, nc = static_cast<int>(clusters.size());
+  std::vector<Eigen::MatrixXd> t_mean(nc), t_mode(dm);
+  for(int c = 0; c < nc; ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    const Eigen::MatrixXd local = gather(d, update_columns);
+    t_mean[c] = local.transpose() * d.laplacian_mean;
+    for(int m = 0; m < d.number_of_modes(); ++m) t_mode[d.offset + m] = local.transpose() * d.laplacian_modes[m];
+  }
+  const auto correction = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) -> Eigen::Matrix3d {
+    return x.transpose() * (capacitance_inverse * y);
+  };
+  for(int a = 0; a < dm; ++a)
+  {
+    for(int b = 0; b < dm; ++b)
+      h_blocks[std::size_t(a) * dm + b] = h_base[std::size_t(a) * dm + b] - correction(t_mode[a], t_mode[b]);
+    for(int d = 0; d < nc; ++d)
+    {
+      g_blocks[std::size_t(a) * nc + d] = g_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
+      qlm_blocks[std::size_t(a) * nc + d] = qlm_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
+    }
+  }
+  for(int d = 0; d < nc; ++d)
+    for(int c = 0; c < nc; ++c)
+      plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
+}
+
+void Embedding_solver::Impl::prepare_handle_terms()
+{
+  if(!factored) factor();
+  b0 = Point_matrix::Zero(n, 3);
+  for(int v = 0; v < n; ++v)
+    if(anchor[v] > 0) b0.row(v) = anchor[v] * mesh.points.row(v);
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    b0.row(handle_vertices[h]) += handle_weight * handle_targets.row(h);
+  handle_constant = 0.;
+  for(int v = 0; v < n; ++v) handle_constant += anchor[v] * mesh.points.row(v).squaredNorm();
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
+  if(options.global_step != Global_step::direct)
+  {
+    const Eigen::MatrixXd z = solve_a11(b0);
+    b0_z = (b0.array() * z.array()).sum();
+    z_blocks.assign(total_modes, Eigen::Matrix3d::Zero());
+    zlm_blocks.assign(clusters.size(), Eigen::Matrix3d::Zero());
+    for(const Cluster_data& c : clusters)
+    {
+      const Eigen::MatrixXd local = gather(c, z);
+      zlm_blocks[&c - clusters.data()] = local.transpose() * c.laplacian_mean;
+      for(int k = 0; k < c.number_of_modes(); ++k)
+        z_blocks[c.offset + k] = c.laplacian_modes[k].transpose() * local;
+    }
+  }
+  handle_terms_ready = true;
+  // The blocks of the implicit positions depend on the handle terms.
+  if(implicit) w_blocks = w_of(coordinates);
+}
+
+} // namespace MPM
+} // namespace CGAL

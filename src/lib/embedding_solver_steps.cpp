@@ -1,0 +1,495 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/internal/Embedding_solver_impl.h>
+
+#include <CGAL/MPM/Input_error.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace CGAL {
+namespace MPM {
+
+using namespace internal::embedding;
+
+void Embedding_solver::Impl::local_step()
+{
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    if(options.rotations == Rotations::per_vertex)
+    {
+      // Each point's rotation fits its incident edges (its one-ring in the cluster).
+      const Point_matrix m = target_shape(d, coordinates);
+      std::vector<Eigen::Matrix3d> covariance(d.vertices.size(), Eigen::Matrix3d::Zero());
+      for(const Weighted_edge& e : d.edges)
+      {
+        const Eigen::Vector3d edge = (positions.row(d.vertices[e.i]) - positions.row(d.vertices[e.j])).transpose();
+        const Eigen::Vector3d rest = (m.row(e.i) - m.row(e.j)).transpose();
+        const Eigen::Matrix3d k = e.w * edge * rest.transpose();
+        covariance[e.i] += k;
+        covariance[e.j] += k;
+      }
+      for(std::size_t i = 0; i < d.vertices.size(); ++i) vertex_rotations[c][i] = closest_rotation(covariance[i]);
+      continue;
+    }
+    Point_matrix lm = d.laplacian_mean;
+    for(int k = 0; k < d.number_of_modes(); ++k) lm += coordinates[d.offset + k] * d.laplacian_modes[k];
+    const Eigen::Matrix3d covariance = gather(d, positions).transpose() * lm;
+    rotations[c] = closest_rotation(covariance);
+  }
+}
+
+// The linear map an edge's target vector goes through: the cluster's rotation,
+// or the average of its ends' rotations.
+Eigen::Matrix3d Embedding_solver::Impl::edge_transform(int c, const Weighted_edge& e) const
+{
+  if(options.rotations == Rotations::per_vertex) return 0.5 * (vertex_rotations[c][e.i] + vertex_rotations[c][e.j]);
+  return rotations[c];
+}
+
+Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
+{
+  const int dm = total_modes, nc = static_cast<int>(clusters.size());
+  if(dm == 0) return Eigen::VectorXd::Zero(0);
+  std::vector<Eigen::Matrix3d> relative(std::size_t(nc) * nc); // R_d^T R_c at [c * nc + d]
+  for(int c = 0; c < nc; ++c)
+    for(int d = 0; d < nc; ++d) relative[std::size_t(c) * nc + d] = rotations[d].transpose() * rotations[c];
+  Eigen::MatrixXd s = s0;
+  Eigen::VectorXd r = r0;
+  for(int a = 0; a < dm; ++a)
+  {
+    const int c = cluster_of_mode[a];
+    for(int b = 0; b < dm; ++b)
+      s(a, b) -= trace_product(h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
+    for(int d = 0; d < nc; ++d)
+      r[a] += trace_product(g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
+    r[a] += trace_product(z_blocks[a], rotations[c]);
+  }
+  s = 0.5 * (s + s.transpose());
+  Eigen::LLT<Eigen::MatrixXd> llt(s);
+  if(llt.info() != Eigen::Success)
+    throw Computation_error("embedding: the shape-coordinate system is not positive definite");
+  return llt.solve(r);
+}
+
+Eigen::MatrixXd Embedding_solver::Impl::positions_rhs(const Eigen::VectorXd& lambda) const
+{
+  Eigen::MatrixXd rhs = b0;
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    Point_matrix lm = d.laplacian_mean;
+    for(int k = 0; k < d.number_of_modes(); ++k) lm += lambda[d.offset + k] * d.laplacian_modes[k];
+    const Eigen::MatrixXd rotated = lm * rotations[c].transpose();
+    for(std::size_t i = 0; i < d.vertices.size(); ++i) rhs.row(d.vertices[i]) += rotated.row(i);
+  }
+  return rhs;
+}
+
+Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambda) const
+{
+  return solve_a11(positions_rhs(lambda));
+}
+
+// W[c][d] = X_c^T A11^-1 X_d at [c * nc + d], and X_c^T Z at [nc * nc + c].
+std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd& lambda) const
+{
+  const int nc = static_cast<int>(clusters.size()), dm = total_modes;
+  std::vector<Eigen::Matrix3d> w(std::size_t(nc) * nc + nc);
+  for(int c = 0; c < nc; ++c)
+  {
+    const Cluster_data& cc = clusters[c];
+    for(int d = 0; d < nc; ++d)
+    {
+      const Cluster_data& cd = clusters[d];
+      Eigen::Matrix3d block = plm_blocks[std::size_t(d) * nc + c].transpose();
+      for(int l = 0; l < cd.number_of_modes(); ++l)
+        block += lambda[cd.offset + l] * qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
+      for(int k = 0; k < cc.number_of_modes(); ++k)
+      {
+        const double lk = lambda[cc.offset + k];
+        block += lk * g_blocks[std::size_t(cc.offset + k) * nc + d];
+        for(int l = 0; l < cd.number_of_modes(); ++l)
+          block += lk * lambda[cd.offset + l] * h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
+      }
+      w[std::size_t(c) * nc + d] = block;
+    }
+    Eigen::Matrix3d z = zlm_blocks[c].transpose();
+    for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * z_blocks[cc.offset + k];
+    w[std::size_t(nc) * nc + c] = z;
+  }
+  return w;
+}
+
+// The energy at the implicit positions: for fixed rotations and coordinates
+// the optimal V = A11^-1 b gives E = sum_c <M~_c, L_c M~_c> + priors + handle
+// constants - b^T A11^-1 b, all from blocks.
+double Embedding_solver::Impl::reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const
+{
+  const int nc = static_cast<int>(clusters.size());
+  double e = mean_energy.sum() - 2. * r0.dot(lambda) + lambda.dot((mode_gram + coupling) * lambda) + handle_constant;
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k) e += c.prior[k] * lambda[c.offset + k] * lambda[c.offset + k];
+  double b_a_b = b0_z;
+  for(int c = 0; c < nc; ++c)
+  {
+    for(int d = 0; d < nc; ++d)
+      b_a_b += trace_product(w[std::size_t(c) * nc + d], rotations[d].transpose() * rotations[c]);
+    b_a_b += 2. * trace_product(w[std::size_t(nc) * nc + c], rotations[c]);
+  }
+  return e - b_a_b;
+}
+
+// The rotation fit's covariance from blocks, for rotations `r`:
+// C_c = V^T L_c M~_c = sum_d R_d W[d][c] + (X_c^T Z)^T.
+Eigen::Matrix3d Embedding_solver::Impl::fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const
+{
+  const int nc = static_cast<int>(clusters.size());
+  Eigen::Matrix3d covariance = w_blocks[std::size_t(nc) * nc + c].transpose();
+  for(int d = 0; d < nc; ++d) covariance += r[d] * w_blocks[std::size_t(d) * nc + c];
+  return covariance;
+}
+
+void Embedding_solver::Impl::reduced_local_step()
+{
+  const std::vector<Eigen::Matrix3d> previous = rotations;
+  for(int c = 0; c < static_cast<int>(clusters.size()); ++c) rotations[c] = closest_rotation(fit_covariance(c, previous));
+}
+
+// The gradient of the reduced energy in the rotations, each in its own frame
+// (R_c exp([omega]x)). With the coordinates and positions optimal for the
+// rotations, only the explicit dependence counts: dE/dR_c = -2 C_c with C_c
+// the covariance of the rotation fit, whose skew part in R_c's frame is the
+// gradient.
+Eigen::VectorXd Embedding_solver::Impl::rotation_gradient() const
+{
+  const int nc = static_cast<int>(clusters.size());
+  Eigen::VectorXd g(3 * nc);
+  for(int c = 0; c < nc; ++c)
+  {
+    const Eigen::Matrix3d m = rotations[c].transpose() * fit_covariance(c, rotations);
+    g.segment<3>(3 * c) = -2. * Eigen::Vector3d(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+  }
+  return g;
+}
+
+// Coordinates and implicit positions optimal for the current rotations (the
+// reduced global step); the reduced energy there. `timings`, when given,
+// receives the time of each phase.
+double Embedding_solver::Impl::settle_at_rotations(Iteration_timings* timings)
+{
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point mark = Clock::now();
+  const auto lap = [&](double Iteration_timings::*phase) {
+    const Clock::time_point now = Clock::now();
+    if(timings) timings->*phase += std::chrono::duration<double, std::milli>(now - mark).count();
+    mark = now;
+  };
+  Eigen::VectorXd lambda = solve_coordinates();
+  lap(&Iteration_timings::schur_ms);
+  std::vector<Eigen::Matrix3d> w = w_of(lambda);
+  lap(&Iteration_timings::right_hand_side_ms);
+  const double e = reduced_energy(lambda, w);
+  lap(&Iteration_timings::energy_ms);
+  if(!lambda.allFinite()) check_finite(positions, lambda);
+  if(!std::isfinite(e)) fail_on_non_finite_energy(positions_from(lambda), lambda);
+  coordinates = std::move(lambda);
+  w_blocks = std::move(w);
+  implicit = true;
+  positions_valid = false;
+  return e;
+}
+
+// From the rest state, start at the best rigid placement of the handles
+// when it fits them better: a rigid edit is then solved at once.
+void Embedding_solver::Impl::start_at_rigid_fit_of_handles()
+{
+  if(handle_vertices.size() < 3) return;
+  Point_matrix rest(handle_vertices.size(), 3);
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h) rest.row(h) = mesh.points.row(handle_vertices[h]);
+  const Rigid_motion motion = fit_rigid_motion(rest, handle_targets);
+  if((motion.apply(rest) - handle_targets).squaredNorm() >= (rest - handle_targets).squaredNorm()) return;
+  positions = motion.apply(mesh.points);
+  implicit = false;
+  positions_valid = true;
+  local_step();
+}
+
+// The state Anderson acceleration combines: rotations and coordinates when
+// positions are implicit (so that iterations stay independent of the vertex
+// count), positions and coordinates otherwise.
+Eigen::VectorXd Embedding_solver::Impl::packed_state() const
+{
+  const bool reduced = options.global_step == Global_step::reduced;
+  const int nc = static_cast<int>(clusters.size());
+  Eigen::VectorXd x(reduced ? 9 * nc + total_modes : 3 * n + total_modes);
+  if(reduced)
+    for(int c = 0; c < nc; ++c) x.segment<9>(9 * c) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(rotations[c].data());
+  else
+    for(int a = 0; a < 3; ++a) x.segment(a * n, n) = positions.col(a);
+  x.tail(total_modes) = coordinates;
+  return x;
+}
+
+// Moves to the packed state `x` (rotations projected onto SO(3)) and returns its energy.
+double Embedding_solver::Impl::enter_state(const Eigen::VectorXd& x)
+{
+  coordinates = x.tail(total_modes);
+  if(options.global_step == Global_step::reduced)
+  {
+    for(int c = 0; c < static_cast<int>(clusters.size()); ++c)
+      rotations[c] = closest_rotation(Eigen::Map<const Eigen::Matrix3d>(x.segment<9>(9 * c).data()));
+    w_blocks = w_of(coordinates);
+    return reduced_energy(coordinates, w_blocks);
+  }
+  for(int a = 0; a < 3; ++a) positions.col(a) = x.segment(a * n, n);
+  local_step();
+  return energy_of(positions, coordinates);
+}
+
+// Moves to the packed `candidate` when its energy is below `energy` (then
+// updated); otherwise stays in the current state, the packed `plain`.
+bool Embedding_solver::Impl::take_if_lower(const Eigen::VectorXd& candidate, const Eigen::VectorXd& plain,
+                                           double& energy)
+{
+  const std::vector<Eigen::Matrix3d> plain_rotations = rotations, plain_w = w_blocks;
+  const Point_matrix plain_positions = options.global_step == Global_step::reduced ? Point_matrix() : positions;
+  const double e = candidate.allFinite() ? enter_state(candidate) : std::numeric_limits<double>::infinity();
+  if(e < energy)
+  {
+    energy = e;
+    return true;
+  }
+  coordinates = plain.tail(total_modes);
+  rotations = plain_rotations;
+  w_blocks = plain_w;
+  if(options.global_step != Global_step::reduced) positions = plain_positions;
+  return false;
+}
+
+// Each step minimizes the energy over its block of unknowns, so a rise
+// beyond rounding means the numbers, not the model, went wrong.
+void Embedding_solver::Impl::check_not_diverging(double e, double best, int& rises, int iteration)
+{
+  const double rounding = 1e-9 * energy_unit();
+  if(e > best + 1e-3 * std::max(best, rounding)) ++rises;
+  else rises = 0;
+  if(rises >= 3 || e > best + 1e3 * std::max(best, rounding))
+    throw Computation_error("embedding: diverging in iteration " + std::to_string(iteration) + " (energy " +
+                            std::to_string(e) + ", lowest " + std::to_string(best) + "), mostly in " +
+                            largest_energy_term(materialized_positions(), coordinates) +
+                            "; the previous state is kept");
+}
+
+// After an iteration from the settled rotations `start` (energy
+// `start_energy`, gradient `gradient`) reached a state of `energy`: with
+// `try_step`, the L-BFGS step on the rotations from `start` replaces that
+// state where it lowers the energy more. One trial, no line search, so that
+// an iteration costs two energy evaluations as with Anderson's
+// extrapolation. The step kept feeds the memory; `gradient` becomes the new
+// state's.
+double Embedding_solver::Impl::quasi_newton_improve(internal::Rotation_lbfgs& lbfgs,
+                                                    const std::vector<Eigen::Matrix3d>& start, double start_energy,
+                                                    Eigen::VectorXd& gradient, double energy, bool try_step)
+{
+  double best = energy;
+  Eigen::VectorXd step = internal::rotation_step(start, rotations);
+  if(try_step && !lbfgs.empty())
+  {
+    const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
+    const Eigen::VectorXd kept_coordinates = coordinates;
+    const Eigen::VectorXd direction = lbfgs.direction(gradient);
+    const double slope = gradient.dot(direction);
+    bool taken = false;
+    if(slope < 0.)
+    {
+      rotations = internal::retract(start, direction);
+      const double e = settle_at_rotations();
+      taken = e < best && e <= start_energy + 1e-4 * slope;
+      if(taken)
+      {
+        best = e;
+        step = direction;
+      }
+    }
+    if(!taken)
+    {
+      rotations = kept_rotations;
+      coordinates = kept_coordinates;
+      w_blocks = kept_w;
+    }
+  }
+  const Eigen::VectorXd g = rotation_gradient();
+  lbfgs.remember(step, g - gradient);
+  gradient = g;
+  return best;
+}
+
+const Point_matrix& Embedding_solver::Impl::materialized_positions()
+{
+  if(!positions_valid)
+  {
+    positions = positions_from(coordinates);
+    positions_valid = true;
+  }
+  return positions;
+}
+
+// The reference: the whole quadratic in (x, y, z, lambda), assembled edge by
+// edge (not from the cluster Laplacians the fast paths use) and factored
+// afresh. Slow, simple, and what the fast paths must agree with. With edge
+// transforms T_e, targets t_e = T_e (m_e + sum_k lambda_k b_ke).
+void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda)
+{
+  const int dm = total_modes, size = 3 * n + dm;
+  std::vector<Eigen::Triplet<double>> t;
+  for(int a = 0; a < 3; ++a)
+    for(int k = 0; k < system.outerSize(); ++k)
+      for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * n + it.row(), a * n + it.col(), it.value());
+  for(std::size_t u = 0; u < update_vertices.size(); ++u)
+    for(int a = 0; a < 3; ++a) t.emplace_back(a * n + update_vertices[u], a * n + update_vertices[u], update_weights[u]);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
+  for(int a = 0; a < 3; ++a) rhs.segment(a * n, n) = b0.col(a);
+  Eigen::MatrixXd lambda_block = coupling;
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    const int modes = d.number_of_modes();
+    std::vector<Eigen::Vector3d> mode_edges(modes);
+    for(const Weighted_edge& e : d.edges)
+    {
+      const Eigen::Matrix3d transform = edge_transform(static_cast<int>(c), e);
+      const int gi = d.vertices[e.i], gj = d.vertices[e.j];
+      const Eigen::Vector3d u = transform * (d.mean.row(e.i) - d.mean.row(e.j)).transpose();
+      for(int a = 0; a < 3; ++a)
+      {
+        rhs[a * n + gi] += e.w * u[a];
+        rhs[a * n + gj] -= e.w * u[a];
+      }
+      for(int k = 0; k < modes; ++k)
+      {
+        mode_edges[k] = transform * (d.modes[k].row(e.i) - d.modes[k].row(e.j)).transpose();
+        const int row = 3 * n + d.offset + k;
+        for(int a = 0; a < 3; ++a)
+        {
+          const double value = e.w * mode_edges[k][a];
+          t.emplace_back(row, a * n + gi, -value);
+          t.emplace_back(a * n + gi, row, -value);
+          t.emplace_back(row, a * n + gj, value);
+          t.emplace_back(a * n + gj, row, value);
+        }
+        rhs[row] -= e.w * mode_edges[k].dot(u);
+      }
+      for(int k = 0; k < modes; ++k)
+        for(int l = 0; l < modes; ++l)
+          lambda_block(d.offset + k, d.offset + l) += e.w * mode_edges[k].dot(mode_edges[l]);
+    }
+    for(int k = 0; k < modes; ++k) lambda_block(d.offset + k, d.offset + k) += d.prior[k];
+  }
+  for(int a = 0; a < dm; ++a)
+    for(int b = 0; b < dm; ++b)
+      if(lambda_block(a, b) != 0.) t.emplace_back(3 * n + a, 3 * n + b, lambda_block(a, b));
+  Sparse k(size, size);
+  k.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Sparse> ldlt(k);
+  if(ldlt.info() != Eigen::Success || non_positive_pivot_row(ldlt) >= 0)
+    throw Computation_error("embedding: factorization of the full system failed");
+  const Eigen::VectorXd x = ldlt.solve(rhs);
+  v.resize(n, 3);
+  for(int a = 0; a < 3; ++a) v.col(a) = x.segment(a * n, n);
+  lambda = x.tail(dm);
+}
+
+double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only) const
+{
+  double e = 0.;
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    if(only >= 0 && int(c) != only) continue;
+    const Cluster_data& d = clusters[c];
+    const Point_matrix m = target_shape(d, lambda);
+    for(const Weighted_edge& edge : d.edges)
+      e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])).transpose() -
+                     edge_transform(static_cast<int>(c), edge) * (m.row(edge.i) - m.row(edge.j)).transpose())
+                      .squaredNorm();
+    for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
+  }
+  if(only >= 0) return e;
+  e += lambda.dot(coupling * lambda);
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    e += handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm();
+  for(int i = 0; i < n; ++i)
+    if(anchor[i] > 0) e += anchor[i] * (v.row(i) - mesh.points.row(i)).squaredNorm();
+  return e;
+}
+
+void Embedding_solver::Impl::check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const
+{
+  if(v.allFinite() && lambda.allFinite()) return;
+  for(const Cluster_data& c : clusters)
+  {
+    bool bad = !lambda.segment(c.offset, c.number_of_modes()).allFinite();
+    for(int i : c.vertices) bad = bad || !v.row(i).allFinite();
+    if(bad) throw Computation_error("embedding: non-finite result in " + c.name + "; the previous state is kept");
+  }
+  throw Computation_error("embedding: non-finite result; the previous state is kept");
+}
+
+// Finite iterates can still give an energy that overflows (a handle target
+// astronomically far away): name the term that does.
+void Embedding_solver::Impl::fail_on_non_finite_energy(const Point_matrix& v, const Eigen::VectorXd& lambda) const
+{
+  check_finite(v, lambda);
+  // A far target drags every handle of its piece along: blame the handle
+  // whose target is farthest from its rest position.
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  std::size_t farthest = handle_vertices.size();
+  bool overflow = false;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+  {
+    overflow = overflow || !std::isfinite(handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm());
+    const double reach = (handle_targets.row(h) - mesh.points.row(handle_vertices[h])).norm();
+    if(farthest == handle_vertices.size() ||
+       reach > (handle_targets.row(farthest) - mesh.points.row(handle_vertices[farthest])).norm())
+      farthest = h;
+  }
+  if(overflow)
+    throw Computation_error("embedding: the energy of handle " + std::to_string(farthest) + " (vertex " +
+                            std::to_string(handle_vertices[farthest]) +
+                            ") overflows (its target is too far away); the previous state is kept");
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+    if(!std::isfinite(energy_of(v, lambda, static_cast<int>(c))))
+      throw Computation_error("embedding: the energy of " + clusters[c].name +
+                              " overflows (its vertices are too far from its shape space); the previous state is kept");
+  throw Computation_error("embedding: the energy overflows; the previous state is kept");
+}
+
+// The term holding most of the energy: where a diverging solve went wrong.
+std::string Embedding_solver::Impl::largest_energy_term(const Point_matrix& v, const Eigen::VectorXd& lambda) const
+{
+  std::string worst = "the handles";
+  double worst_energy = 0.;
+  const double handle_weight = options.handle_weight * mean_diagonal;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    worst_energy += handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm();
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const double e = energy_of(v, lambda, static_cast<int>(c));
+    if(!(e <= worst_energy))
+    {
+      worst_energy = e;
+      worst = clusters[c].name;
+    }
+  }
+  return worst;
+}
+
+} // namespace MPM
+} // namespace CGAL
