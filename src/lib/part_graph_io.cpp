@@ -5,6 +5,7 @@
 #include <CGAL/MPM/Shape_grammar.h>
 #include <CGAL/MPM/internal/Atomic_file.h>
 #include <CGAL/MPM/internal/Json_reader.h>
+#include <CGAL/MPM/internal/Message_text.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,9 @@
 namespace CGAL {
 namespace MPM {
 
+using internal::quoted;
+using internal::site_text;
+
 namespace {
 
 using json = nlohmann::json;
@@ -20,13 +24,6 @@ using internal::Json_reader;
 
 const char* const part_graph_format = "cgal-mpm-part-graph";
 constexpr int part_graph_version = 1;
-
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
-
-std::string site_text(const Morphable_part_model& model, const Site_ref& s)
-{
-  return quoted(model.types[s.type].name) + " site " + std::to_string(s.site);
-}
 
 std::string node_text(const Morphable_part_model& model, const Part_graph& graph, int n)
 {

@@ -4,6 +4,7 @@
 // Part types proposed from a segmentation (segment graph, seam loops, size)
 // and the checks a real segmentation must pass before correspondence.
 #include <CGAL/MPM/Part_type_proposal.h>
+#include <CGAL/MPM/internal/Message_text.h>
 
 #include <CGAL/MPM/Dense_correspondence.h>
 #include <CGAL/MPM/Input_error.h>
@@ -22,11 +23,11 @@
 namespace CGAL {
 namespace MPM {
 
+using internal::quoted;
+
 namespace {
 
 std::string segment_name(int label) { return "segment " + std::to_string(label); }
-
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
 std::uint64_t edge_key(int a, int b)
 {

@@ -1,0 +1,29 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_INTERNAL_MESSAGE_TEXT_H
+#define CGAL_MPM_INTERNAL_MESSAGE_TEXT_H
+
+// How error messages name things, one way everywhere.
+
+#include <CGAL/MPM/Morphable_part_model.h>
+
+#include <string>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+
+// A name in quotes.
+inline std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+
+// A docking site: its part type's name and its index (`"palm" site 2`).
+inline std::string site_text(const Morphable_part_model& model, const Site_ref& s)
+{
+  return quoted(model.types[s.type].name) + " site " + std::to_string(s.site);
+}
+
+} // namespace internal
+} // namespace MPM
+} // namespace CGAL
+
+#endif
