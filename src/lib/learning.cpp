@@ -4,7 +4,6 @@
 #include <CGAL/MPM/Part_type_proposal.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
-#include <CGAL/MPM/internal/Seam_stitching.h>
 #include <CGAL/MPM/internal/Training_parts.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>

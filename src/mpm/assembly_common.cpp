@@ -4,15 +4,16 @@
 
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/internal/Mesh_file_checks.h>
 #include <CGAL/MPM/Part_graph_editing.h>
 #include <CGAL/MPM/Part_graph_io.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
-#include <filesystem>
 
 namespace mpm {
+
+using CGAL::MPM::internal::lower_extension;
 
 namespace {
 
@@ -21,13 +22,6 @@ constexpr std::array<std::array<unsigned char, 3>, 10> type_palette = {{
   {78, 121, 167}, {242, 142, 43}, {225, 87, 89},  {118, 183, 178}, {89, 161, 79},
   {237, 201, 72}, {176, 122, 161}, {255, 157, 167}, {156, 117, 95}, {186, 176, 172},
 }};
-
-std::string lower_extension(const std::string& path)
-{
-  std::string e = std::filesystem::path(path).extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-  return e;
-}
 
 } // namespace
 

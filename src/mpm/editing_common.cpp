@@ -8,19 +8,20 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/internal/Mesh_file_checks.h>
 #include <CGAL/MPM/Surface_soundness.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <chrono>
 #include <climits>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <map>
 
 namespace mpm {
+
+using CGAL::MPM::internal::lower_extension;
 
 namespace {
 
@@ -49,13 +50,6 @@ Color_matrix part_type_colors(const CGAL::MPM::Training_example& example)
     colors.row(f) << c[0], c[1], c[2];
   }
   return colors;
-}
-
-std::string lower_extension(const std::string& path)
-{
-  std::string e = std::filesystem::path(path).extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-  return e;
 }
 
 double milliseconds_since(Clock::time_point start)
