@@ -128,9 +128,9 @@ void Solver_thread::run()
         }
         const auto start = std::chrono::steady_clock::now();
         const MPM::Solve_report report = solver->solve();
+        f.ms = milliseconds_since(start);
         f.positions = r.unfold ? MPM::unfold_faces(r.problem->mesh, solver->positions(), r.handle_vertices)
                                : solver->positions();
-        f.ms = milliseconds_since(start);
         f.iterations = report.iterations;
         f.converged = report.converged;
         f.energy = report.energy();

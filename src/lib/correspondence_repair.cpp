@@ -7,8 +7,12 @@ namespace MPM {
 namespace internal {
 namespace correspondence {
 
-// RMS distance of the segment's vertices to the mapped template surface.
-double coverage_residual(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles)
+namespace {
+
+// Squared distance of each of the segment's vertices to the mapped
+// template surface; empty when every mapped triangle is degenerate.
+std::vector<double> squared_distances_to_mapped(const Surface& s, const Point_matrix& y,
+                                                const std::vector<Triangle>& triangles)
 {
   std::vector<Kernel::Triangle_3> mapped;
   for(const Triangle& t : triangles)
@@ -16,12 +20,23 @@ double coverage_residual(const Surface& s, const Point_matrix& y, const std::vec
     const Kernel::Triangle_3 tri(to_point(y.row(t[0])), to_point(y.row(t[1])), to_point(y.row(t[2])));
     if(!tri.is_degenerate()) mapped.push_back(tri);
   }
-  if(mapped.empty()) return 1.;
+  if(mapped.empty()) return {};
   Triangle_tree tree(mapped.begin(), mapped.end());
   tree.accelerate_distance_queries();
+  std::vector<double> d(std::size_t(s.mesh.points.rows()));
+  for(Eigen::Index v = 0; v < s.mesh.points.rows(); ++v) d[std::size_t(v)] = tree.squared_distance(to_point(s.mesh.points.row(v)));
+  return d;
+}
+
+} // namespace
+
+// RMS distance of the segment's vertices to the mapped template surface.
+double coverage_residual(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles)
+{
+  const std::vector<double> d = squared_distances_to_mapped(s, y, triangles);
+  if(d.empty()) return 1.;
   double sum = 0.;
-  for(Eigen::Index v = 0; v < s.mesh.points.rows(); ++v)
-    sum += tree.squared_distance(to_point(s.mesh.points.row(v)));
+  for(double x : d) sum += x;
   return std::sqrt(sum / s.mesh.points.rows()) / s.diagonal;
 }
 
@@ -131,19 +146,12 @@ void cover_missed_points(const Surface& s, const Template_info& info, const Land
   };
   for(int pass = 0; pass < 8; ++pass)
   {
-    std::vector<Kernel::Triangle_3> mapped;
-    for(const Triangle& t : triangles)
-    {
-      const Kernel::Triangle_3 tri(to_point(y.row(t[0])), to_point(y.row(t[1])), to_point(y.row(t[2])));
-      if(!tri.is_degenerate()) mapped.push_back(tri);
-    }
-    if(mapped.empty()) return;
-    Triangle_tree tree(mapped.begin(), mapped.end());
-    tree.accelerate_distance_queries();
+    const std::vector<double> squared = squared_distances_to_mapped(s, y, triangles);
+    if(squared.empty()) return;
     std::vector<std::pair<double, int>> missed;
-    for(Eigen::Index p = 0; p < s.mesh.points.rows(); ++p)
+    for(std::size_t p = 0; p < squared.size(); ++p)
     {
-      const double d = std::sqrt(tree.squared_distance(to_point(s.mesh.points.row(p))));
+      const double d = std::sqrt(squared[p]);
       if(d > 0.5 * edge) missed.emplace_back(d, int(p));
     }
     std::sort(missed.rbegin(), missed.rend());

@@ -101,8 +101,9 @@ Embedding_problem make_caricature_problem(const Morphable_part_model& model, dou
   return make_problem(model, example, [factor, by_rotations](const Part_type& type, const Eigen::VectorXd& coordinates,
                                                              const Point_matrix& rest) {
     Part_target t;
-    t.mean = internal::unfold_target(exaggerated_target(type, coordinates, rest, factor, by_rotations), rest,
-                                     type.triangles);
+    t.mean = exaggerated_target(type, coordinates, rest, factor, by_rotations);
+    // Factor 1 (deformation) asks for the rest itself: nothing to unfold.
+    if(factor != 1.) t.mean = internal::unfold_target(t.mean, rest, type.triangles);
     t.sigmas = type.space.sigmas;
     return t;
   }, learned_sigmas);

@@ -4,6 +4,7 @@
 
 #include <CGAL/MPM/Arap_deformation.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Edge_graph_distance.h>
 
 #include <Eigen/Geometry>
 
@@ -16,21 +17,17 @@ namespace internal {
 
 namespace {
 
-// Per vertex, its neighbours along the triangles' edges (sorted, unique).
+// Per vertex, its neighbours along the triangles' edges, in increasing
+// order (the patches, and so their ARAP solves, are numbered in it).
 std::vector<std::vector<int>> neighbours_of(Eigen::Index n, const std::vector<Triangle>& triangles)
 {
   std::vector<std::vector<int>> next{std::size_t(n)};
-  for(const Triangle& t : triangles)
-    for(int k = 0; k < 3; ++k)
-    {
-      next[std::size_t(t[k])].push_back(t[(k + 1) % 3]);
-      next[std::size_t(t[(k + 1) % 3])].push_back(t[k]);
-    }
-  for(std::vector<int>& v : next)
+  for(const Cluster_edge& e : mesh_edges(triangles))
   {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
+    next[std::size_t(e.source)].push_back(e.target);
+    next[std::size_t(e.target)].push_back(e.source);
   }
+  for(std::vector<int>& v : next) std::sort(v.begin(), v.end());
   return next;
 }
 

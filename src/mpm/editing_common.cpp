@@ -204,14 +204,14 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
     throw Computation_error("the solver produced non-finite positions or energy for example " +
                             std::to_string(example) + " of " + model_path +
                             " (try a smaller --handle-weight or handle offsets)");
-  const Clock::time_point unfold_start = Clock::now();
   const int folds_solved =
     static_cast<int>(inverted_faces(edited_mesh(input, solver.positions()), input.mesh, &input.face_labels).size());
+  const Clock::time_point unfold_start = Clock::now();
   const Point_matrix result =
     args.flag("keep-folds") ? solver.positions() : unfold_faces(input.mesh, solver.positions(), handles.vertices);
+  const double unfold_ms = milliseconds_since(unfold_start);
   const Indexed_mesh edited = edited_mesh(input, result);
   const int folds_written = static_cast<int>(inverted_faces(edited, input.mesh, &input.face_labels).size());
-  const double unfold_ms = milliseconds_since(unfold_start);
   check_displacement(input.mesh.points, result, model_path);
 
   context.progress.update("writing " + output, 0.9);
