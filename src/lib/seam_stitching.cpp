@@ -46,7 +46,11 @@ struct Seam_loop
   double wrap(double d) const { return d - length * std::floor(d / length); }
 };
 
-// Chains directed border half-edges (a -> b) into closed loops.
+// Chains directed border half-edges (a -> b) into closed loops. Where a
+// label's border passes a vertex twice (a ring cut down to nothing at one
+// vertex, so that its two loops touch), each visit closes a loop of its
+// own: every loop is simple, whichever way the chain turned there, so the
+// original mesh and a kept part chained in another order get the same loops.
 std::vector<std::vector<int>> chain_loops(std::multimap<int, int> out)
 {
   std::vector<std::vector<int>> loops;
@@ -54,16 +58,26 @@ std::vector<std::vector<int>> chain_loops(std::multimap<int, int> out)
   {
     auto it = out.begin();
     const int start = it->first;
-    std::vector<int> loop;
+    std::vector<int> path;
+    std::map<int, std::size_t> position;
     while(it != out.end())
     {
-      loop.push_back(it->first);
+      const int v = it->first;
+      const auto seen = position.find(v);
+      if(seen != position.end())
+      {
+        loops.emplace_back(path.begin() + std::ptrdiff_t(seen->second), path.end());
+        for(auto k = seen->second; k < path.size(); ++k) position.erase(path[k]);
+        path.resize(seen->second);
+      }
+      position[v] = path.size();
+      path.push_back(v);
       const int next = it->second;
       out.erase(it);
       if(next == start) break;
       it = out.find(next);
     }
-    loops.push_back(std::move(loop));
+    loops.push_back(std::move(path));
   }
   return loops;
 }
@@ -147,11 +161,14 @@ struct Seam_point
 };
 
 // What a part has at a class of identified points: its own vertex, or a
-// vertex inserted into its border edge from -> to at `weight`.
+// vertex inserted into its border edge from -> to at `weight`; and where
+// it is on each of the part's border loops through it (two where the
+// part's border touches itself there).
 struct Part_side
 {
   int local = -1, from = -1, to = -1;
-  double weight = 0., parameter = 0.;
+  double weight = 0.;
+  std::map<int, double> parameter; // border loop -> parameter on its original loop, in [0, 1)
 };
 
 // A part's own border loops (local ids, oriented like its faces) and the
@@ -386,8 +403,10 @@ private:
     // loops must not be inserted there as well.
     for(std::size_t b = 0; b < border.loops.size(); ++b)
       for(std::size_t k = 0; k < border.loops[b].size(); ++k)
-        sides.insert({find(border.point[b][k]),
-                      {border.loops[b][k], -1, -1, 0., border.parameter[b][k] / sl_length(border.on_loop[b])}});
+      {
+        Part_side& side = sides.insert({find(border.point[b][k]), {border.loops[b][k], -1, -1, 0., {}}}).first->second;
+        side.parameter.insert({int(b), border.parameter[b][k] / sl_length(border.on_loop[b])});
+      }
     for(std::size_t b = 0; b < border.loops.size(); ++b)
     {
       const std::vector<int>& loop = border.loops[b];
@@ -412,7 +431,7 @@ private:
           const int c = find(i);
           const double d = sl.wrap(direction * (parameter - start));
           if(!(d > 0. && d < span) || sides.count(c)) continue;
-          sides[c] = {-1, loop[k], loop[next], d / span, parameter / sl.length};
+          sides[c] = {-1, loop[k], loop[next], d / span, {{int(b), parameter / sl.length}}};
         }
       }
     }
@@ -455,12 +474,21 @@ private:
       seam.label_b = pq.second;
       const std::map<int, Part_side>& a = sides_[pq.first];
       const std::map<int, Part_side>& b = sides_[pq.second];
+      // The seam is ordered along the first part's border loop that most
+      // of its points lie on.
+      std::map<int, int> votes;
+      for(int c : classes)
+        if(a.count(c) && b.count(c))
+          for(const auto& [loop, parameter] : a.at(c).parameter) ++votes[loop];
+      const auto along = std::max_element(votes.begin(), votes.end(),
+                                          [](const auto& x, const auto& y) { return x.second < y.second; });
       for(int c : classes)
       {
         const auto sa = a.find(c), sb = b.find(c);
         if(sa == a.end() || sb == b.end()) continue;
         Seam_vertex v;
-        v.parameter = sa->second.parameter;
+        const auto on_loop = sa->second.parameter.find(along->first);
+        v.parameter = on_loop != sa->second.parameter.end() ? on_loop->second : sa->second.parameter.begin()->second;
         int side = 0;
         for(const Part_side& s : {sa->second, sb->second})
         {
