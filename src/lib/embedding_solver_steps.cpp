@@ -53,15 +53,16 @@ Eigen::Matrix3d Embedding_solver::Impl::edge_transform(int c, const Weighted_edg
   return rotations[c];
 }
 
-Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
+// The shape-coordinate system S(R) lambda = r(R) at the current rotations:
+// half the Hessian of the energy in the coordinates, and the right-hand side.
+void Embedding_solver::Impl::coordinate_system(Eigen::MatrixXd& s, Eigen::VectorXd& r) const
 {
   const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  if(dm == 0) return Eigen::VectorXd::Zero(0);
   std::vector<Eigen::Matrix3d> relative(std::size_t(nc) * nc); // R_d^T R_c at [c * nc + d]
   for(int c = 0; c < nc; ++c)
     for(int d = 0; d < nc; ++d) relative[std::size_t(c) * nc + d] = rotations[d].transpose() * rotations[c];
-  Eigen::MatrixXd s = s0;
-  Eigen::VectorXd r = r0;
+  s = s0;
+  r = r0;
   for(int a = 0; a < dm; ++a)
   {
     const int c = cluster_of_mode[a];
@@ -72,6 +73,14 @@ Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
     r[a] += trace_product(z_blocks[a], rotations[c]);
   }
   s = 0.5 * (s + s.transpose());
+}
+
+Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
+{
+  if(total_modes == 0) return Eigen::VectorXd::Zero(0);
+  Eigen::MatrixXd s;
+  Eigen::VectorXd r;
+  coordinate_system(s, r);
   Eigen::LLT<Eigen::MatrixXd> llt(s);
   if(llt.info() != Eigen::Success)
     throw Computation_error("embedding: the shape-coordinate system is not positive definite");

@@ -49,10 +49,15 @@ TEST(Cancellation, SolveStopsAtTheNextIterationAndCanResume)
   EXPECT_EQ(iterations, 2);
   EXPECT_TRUE(solver.positions().allFinite());
 
+  // Resumed, it ends where an uninterrupted solve does.
   cancel = false;
   const Solve_report report = solver.solve();
   EXPECT_TRUE(report.converged);
-  EXPECT_GT(iterations, 2);
+  Embedding_solver uninterrupted(make_deformation_problem(l.model));
+  uninterrupted.set_handles(h.vertices, h.targets);
+  uninterrupted.solve();
+  EXPECT_NEAR(solver.energy(), uninterrupted.energy(), 1e-6 * uninterrupted.energy());
+  EXPECT_LT((solver.positions() - uninterrupted.positions()).norm(), 1e-4 * uninterrupted.positions().norm());
 }
 
 TEST(Cancellation, ArapAndMpmMethodsStopWhereTheFlagIsRaised)
@@ -66,12 +71,12 @@ TEST(Cancellation, ArapAndMpmMethodsStopWhereTheFlagIsRaised)
     int calls = 0;
     options.iteration_callback = [&](int iteration) {
       calls = iteration;
-      if(iteration == 3) cancel = true;
+      if(iteration == 1) cancel = true;
     };
     auto method = make_deformation_method(name, l.model, 0, options);
     method->set_handles(pose_handles(l));
     EXPECT_THROW(method->deform(), Operation_cancelled) << name;
-    EXPECT_EQ(calls, 3) << name;
+    EXPECT_EQ(calls, 1) << name;
   }
 }
 

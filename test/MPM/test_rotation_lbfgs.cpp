@@ -100,6 +100,7 @@ TEST(Rotation_lbfgs, solver_reaches_the_local_global_minimum_sooner)
   const Embedding_problem problem = make_symmetrization_problem(l.model);
   Embedding_options plain, quasi_newton;
   plain.quasi_newton = false;
+  plain.newton = quasi_newton.newton = false; // L-BFGS against local/global steps alone
   plain.max_iterations = quasi_newton.max_iterations = 1000;
   plain.tolerance = quasi_newton.tolerance = 1e-8;
   Embedding_solver a(problem, plain), b(problem, quasi_newton);

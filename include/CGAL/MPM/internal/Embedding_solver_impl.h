@@ -186,7 +186,10 @@ struct Embedding_solver::Impl
   double settle_at_rotations(Iteration_timings* timings = nullptr);
   double quasi_newton_improve(internal::Rotation_lbfgs& lbfgs, const std::vector<Eigen::Matrix3d>& start,
                               double start_energy, Eigen::VectorXd& gradient, double energy, bool try_step);
+  void coordinate_system(Eigen::MatrixXd& s, Eigen::VectorXd& r) const;
   Eigen::VectorXd solve_coordinates() const;
+  Eigen::MatrixXd reduced_hessian() const;
+  double newton_improve(double energy, double& damping);
   Eigen::MatrixXd positions_rhs(const Eigen::VectorXd& lambda) const;
   Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
   std::vector<Eigen::Matrix3d> w_of(const Eigen::VectorXd& lambda) const;
