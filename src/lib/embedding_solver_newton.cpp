@@ -13,6 +13,7 @@
 #include <Eigen/Cholesky>
 
 #include <cmath>
+#include <map>
 #include <limits>
 
 namespace CGAL {
@@ -105,6 +106,34 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
   return 0.5 * (hessian + hessian.transpose());
 }
 
+// `step` without its turns of free pieces. A piece without handles is held
+// by one anchored vertex, so turning all its clusters together about it
+// (w_c = R_c^T a for an axis a) leaves the energy as it is: the Hessian is
+// singular there, and the rounding of the gradient along those directions,
+// divided by the damping, turned a whole caricature by 5 degrees.
+Eigen::VectorXd Embedding_solver::Impl::without_free_turns(Eigen::VectorXd step) const
+{
+  std::vector<bool> held(n, false);
+  for(int v : handle_vertices) held[component[v]] = true;
+  std::map<int, std::vector<int>> clusters_of_piece;
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+    if(!clusters[c].vertices.empty() && !held[component[clusters[c].vertices.front()]])
+      clusters_of_piece[component[clusters[c].vertices.front()]].push_back(int(c));
+  for(const auto& [piece, members] : clusters_of_piece)
+  {
+    std::vector<Eigen::VectorXd> turns;
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      Eigen::VectorXd t = Eigen::VectorXd::Zero(step.size());
+      for(int c : members) t.segment<3>(3 * c) = rotations[c].transpose().col(axis);
+      for(const Eigen::VectorXd& u : turns) t -= u.dot(t) * u;
+      if(t.norm() > 0.) turns.push_back(t.normalized());
+    }
+    for(const Eigen::VectorXd& u : turns) step -= u.dot(step) * u;
+  }
+  return step;
+}
+
 // A damped Newton step from the current (settled) rotations, kept when it
 // lowers `energy`; the damping (Levenberg-Marquardt, relative to the
 // Hessian's mean diagonal) adapts across calls. Returns the energy reached.
@@ -127,7 +156,7 @@ double Embedding_solver::Impl::newton_improve(double energy, double& damping)
     damped.diagonal().array() += damping * scale;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(damped);
     if(ldlt.info() != Eigen::Success || !ldlt.isPositive() || (ldlt.vectorD().array() <= 0.).any()) continue;
-    const Eigen::VectorXd step = -ldlt.solve(gradient);
+    const Eigen::VectorXd step = without_free_turns(-ldlt.solve(gradient));
     if(!step.allFinite() || gradient.dot(step) >= 0.) continue;
     rotations = internal::retract(kept_rotations, step);
     double e = std::numeric_limits<double>::infinity();

@@ -82,7 +82,7 @@ TEST_P(Solver_on_family, fast_paths_agree_with_direct_every_iteration)
 
 // Newton's step on the rotations (the default) reaches the minimum the
 // local/global steps reach when run to a tight tolerance (or a lower
-// energy), never raising the energy, in a few iterations (measured 2-6):
+// energy), never raising the energy, in a few iterations (measured 2-7):
 // converging that fast needs the exact Hessian.
 // A drag toward a held-out pose and the symmetrization, on every family.
 TEST_P(Solver_on_family, newton_reaches_the_local_global_minimum_in_a_few_iterations)
@@ -105,7 +105,7 @@ TEST_P(Solver_on_family, newton_reaches_the_local_global_minimum_in_a_few_iterat
     const Solve_report r = newton.solve();
     reference.solve(); // 105-3,150 iterations
     EXPECT_TRUE(r.converged);
-    EXPECT_LE(r.iterations, 6);
+    EXPECT_LE(r.iterations, 8); // 12-60 on four families with the coordinates left out of the Hessian
     for(std::size_t i = 1; i + 1 < r.energies.size(); ++i)
       EXPECT_LE(r.energies[i], r.energies[i - 1] + 1e-9 * r.energies.front()) << "iteration " << i;
     const double scale = l.truth.mesh.mesh.points.squaredNorm();
@@ -113,6 +113,20 @@ TEST_P(Solver_on_family, newton_reaches_the_local_global_minimum_in_a_few_iterat
     // slow reference stops 1e-3 of the size away at the same energy.
     EXPECT_LE(newton.energy(), reference.energy() + 1e-6 * reference.energy() + 1e-12 * scale);
   }
+}
+
+// A piece without handles is held by one anchored vertex, free to turn
+// about it at no cost: Newton's steps leave those turns out, so the
+// hexa-grid's caricature comes out in place (turned by 0.008 rad against the
+// input, as with local/global steps; 0.086 rad, 5 degrees, before).
+TEST(Embedding_solver, newton_steps_do_not_turn_a_piece_without_handles)
+{
+  const Learned& l = learned(Synthetic_family::hexa_grid);
+  Embedding_solver solver(make_caricature_problem(l.model, 2.));
+  ASSERT_TRUE(solver.solve().converged);
+  const Eigen::Matrix3Xd p = solver.positions().transpose(), q = l.truth.mesh.mesh.points.transpose();
+  const Eigen::Matrix4d fit = Eigen::umeyama(p, q, false);
+  EXPECT_LT(Eigen::AngleAxisd(Eigen::Matrix3d(fit.topLeftCorner<3, 3>())).angle(), 0.02);
 }
 
 TEST_P(Solver_on_family, rest_state_is_the_minimum)

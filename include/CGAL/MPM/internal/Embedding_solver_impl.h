@@ -189,6 +189,7 @@ struct Embedding_solver::Impl
   void coordinate_system(Eigen::MatrixXd& s, Eigen::VectorXd& r) const;
   Eigen::VectorXd solve_coordinates() const;
   Eigen::MatrixXd reduced_hessian() const;
+  Eigen::VectorXd without_free_turns(Eigen::VectorXd step) const;
   double newton_improve(double energy, double& damping);
   Eigen::MatrixXd positions_rhs(const Eigen::VectorXd& lambda) const;
   Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
