@@ -11,6 +11,7 @@
 #include <CGAL/MPM/Input_error.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <map>
@@ -106,26 +107,42 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
   return 0.5 * (hessian + hessian.transpose());
 }
 
-// `step` without its turns of free pieces. A piece without handles is held
-// by one anchored vertex, so turning all its clusters together about it
-// (w_c = R_c^T a for an axis a) leaves the energy as it is: the Hessian is
-// singular there, and the rounding of the gradient along those directions,
-// divided by the damping, turned a whole caricature by 5 degrees.
+// `step` without the turns the handles leave free. Turning all clusters of
+// a connected piece together about an axis a (w_c = R_c^T a; positions
+// follow) leaves the energy as it is when the piece's handles lie on a line
+// along a: every axis for a piece with no handle (held by one anchored
+// vertex) or one, the line's direction for two. The Hessian is singular
+// there, and the rounding of the gradient along those directions, divided
+// by the damping, turned a caricature by 5 degrees and a hand held by two
+// finger tips by 16 degrees about the line between them.
 Eigen::VectorXd Embedding_solver::Impl::without_free_turns(Eigen::VectorXd step) const
 {
-  std::vector<bool> held(n, false);
-  for(int v : handle_vertices) held[component[v]] = true;
   std::map<int, std::vector<int>> clusters_of_piece;
   for(std::size_t c = 0; c < clusters.size(); ++c)
-    if(!clusters[c].vertices.empty() && !held[component[clusters[c].vertices.front()]])
-      clusters_of_piece[component[clusters[c].vertices.front()]].push_back(int(c));
+    if(!clusters[c].vertices.empty()) clusters_of_piece[component[clusters[c].vertices.front()]].push_back(int(c));
+  std::map<int, std::vector<Eigen::RowVector3d>> handles_of_piece;
+  for(std::size_t h = 0; h < handle_vertices.size(); ++h)
+    handles_of_piece[component[handle_vertices[h]]].push_back(handle_targets.row(Eigen::Index(h)));
   for(const auto& [piece, members] : clusters_of_piece)
   {
+    std::vector<Eigen::Vector3d> axes{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()};
+    const std::vector<Eigen::RowVector3d>& held = handles_of_piece[piece];
+    if(held.size() >= 2)
+    {
+      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+      for(const Eigen::RowVector3d& p : held) mean += p;
+      mean /= double(held.size());
+      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+      for(const Eigen::RowVector3d& p : held) covariance += (p - mean).transpose() * (p - mean);
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+      axes.clear();
+      if(eigen.eigenvalues()(1) <= 1e-12 * eigen.eigenvalues()(2)) axes.push_back(eigen.eigenvectors().col(2));
+    }
     std::vector<Eigen::VectorXd> turns;
-    for(int axis = 0; axis < 3; ++axis)
+    for(const Eigen::Vector3d& axis : axes)
     {
       Eigen::VectorXd t = Eigen::VectorXd::Zero(step.size());
-      for(int c : members) t.segment<3>(3 * c) = rotations[c].transpose().col(axis);
+      for(int c : members) t.segment<3>(3 * c) = rotations[c].transpose() * axis;
       for(const Eigen::VectorXd& u : turns) t -= u.dot(t) * u;
       if(t.norm() > 0.) turns.push_back(t.normalized());
     }
