@@ -149,6 +149,31 @@ TEST(Embedding_solver, newton_steps_leave_out_the_turns_the_handles_leave_free)
   EXPECT_LT(turn_between(newton.positions(), reference.positions()), 0.05);
 }
 
+// A drag gives the same handles new targets: the reduced step then reuses
+// the solutions it keeps per handle set instead of a back-substitution, and
+// still agrees with the direct reference, iteration by iteration.
+TEST_P(Solver_on_family, new_targets_of_the_same_handles_agree_with_direct)
+{
+  const Learned& l = learned(GetParam());
+  const Embedding_problem problem = make_deformation_problem(l.model);
+  Embedding_options direct;
+  direct.global_step = Global_step::direct;
+  Embedding_solver reduced(problem), reference(problem, direct);
+  const std::vector<int> handles = handle_per_part(l.truth);
+  reduced.set_handles(handles, rows(l.truth.draw_pose(3), handles));
+  reduced.preprocess();
+  const Point_matrix targets = rows(l.truth.draw_pose(7), handles);
+  reduced.set_handles(handles, targets);
+  reference.set_handles(handles, targets);
+  for(int it = 0; it < 3; ++it)
+  {
+    const double er = reduced.iterate(), ed = reference.iterate();
+    EXPECT_NEAR(er, ed, 1e-6 * std::abs(ed)) << "iteration " << it;
+    EXPECT_LT((reduced.positions() - reference.positions()).norm(), 1e-8 * reference.positions().norm())
+      << "iteration " << it;
+  }
+}
+
 TEST_P(Solver_on_family, rest_state_is_the_minimum)
 {
   const Learned& l = learned(GetParam());

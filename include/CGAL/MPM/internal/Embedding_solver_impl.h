@@ -144,6 +144,12 @@ struct Embedding_solver::Impl
   Eigen::MatrixXd s0;             // constant part of the Schur complement
   Eigen::VectorXd r0;             // constant part of its right-hand side
   Point_matrix b0;                // handle and anchor right-hand side
+  // A11^-1 of each handle's unit right-hand side and of the anchors' part of
+  // b0, for the handle set `handle_columns_for` (handle_solution()).
+  Eigen::MatrixXd handle_columns;
+  Point_matrix anchor_solution;
+  std::vector<int> handle_columns_for;
+  bool handle_columns_valid = false;
   std::vector<int> cluster_of_mode;
 
   // State. With the reduced step, positions are implicit (A11^-1 b(R, lambda))
@@ -169,6 +175,7 @@ struct Embedding_solver::Impl
   bool update_handle_set(const std::vector<int>& vertices);
   void apply_update();
   Eigen::MatrixXd solve_a11(const Eigen::MatrixXd& rhs) const;
+  Eigen::MatrixXd handle_solution();
   void prepare_handle_terms();
   Eigen::MatrixXd scatter(const Cluster_data& c, const Point_matrix& local) const;
   Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
