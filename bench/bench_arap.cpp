@@ -5,7 +5,9 @@
 // with handles pulling towards a held-out pose. The last argument is the
 // number of farthest-point handles. Names match bench_mpm.cpp, so rows read
 // side by side: BM_iteration/hand_23k/arap/handles:16 next to
-// BM_iteration/hand_23k/mpm_schur_ldlt/handles:16.
+// BM_iteration/hand_23k/mpm_schur_ldlt/handles:16. BM_first_frame and
+// BM_frame run ARAP to convergence as the demo does, for the wait after
+// choosing handles and a drag frame.
 #include "bench_models.h"
 
 #include <CGAL/MPM/Arap_deformation.h>
@@ -13,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <exception>
+#include <optional>
 #include <string>
 
 namespace {
@@ -72,6 +75,81 @@ void BM_arap_preprocess(benchmark::State& state, Bench_model model)
   set_counters(state, model, memory);
 }
 
+// ARAP run as the demo runs it: until an iteration moves no vertex by more
+// than 1e-4 of the bounding-box diagonal, at most 200 iterations.
+constexpr int converged_iterations = 200;
+constexpr double converged_tolerance = 1e-4;
+
+// The wait after choosing handles: the deformation object is made when the
+// mesh is loaded (not timed); set_handles(), preprocess(), deform() from
+// rest to convergence and positions() are.
+void BM_arap_first_frame(benchmark::State& state, Bench_model model)
+{
+  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
+     !error.empty()) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const mpm_bench::Memory_probe memory;
+  double iterations = 0.;
+  try {
+    for(auto _ : state) {
+      state.PauseTiming();
+      std::optional<Arap_deformation> arap;
+      arap.emplace(mpm_bench::bench_mesh(model).mesh);
+      state.ResumeTiming();
+      arap->set_handles(handles);
+      arap->preprocess();
+      iterations += arap->deform(converged_iterations, converged_tolerance);
+      benchmark::DoNotOptimize(arap->positions().data());
+      state.PauseTiming(); // not the destruction
+      arap.reset();
+      state.ResumeTiming();
+    }
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
+  set_counters(state, model, memory);
+}
+
+// A drag frame as bench_mpm.cpp's BM_frame has it: from a converged state
+// the first handle moves by 1% of the diagonal (back and forth every 10
+// frames), then deform() to convergence and positions().
+void BM_arap_frame(benchmark::State& state, Bench_model model)
+{
+  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
+     !error.empty()) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  CGAL::MPM::Handle_set handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const CGAL::MPM::Point_matrix& rest = mpm_bench::bench_mesh(model).mesh.points;
+  const Eigen::RowVector3d drag = 0.01 * (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm() *
+                                  Eigen::RowVector3d(1., 1., 1.).normalized();
+  const mpm_bench::Memory_probe memory;
+  double iterations = 0.;
+  try {
+    Arap_deformation arap(mpm_bench::bench_mesh(model).mesh);
+    arap.set_handles(handles);
+    arap.deform(converged_iterations, converged_tolerance);
+    int frame = 0;
+    for(auto _ : state) {
+      handles.targets.row(0) += (frame++ / 10) % 2 == 0 ? drag : Eigen::RowVector3d(-drag);
+      arap.set_handles(handles);
+      iterations += arap.deform(converged_iterations, converged_tolerance);
+      benchmark::DoNotOptimize(arap.positions().data());
+    }
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
+  set_counters(state, model, memory);
+}
+
 const bool registered = [] {
   for(Bench_model model : mpm_bench::all_models()) {
     const std::string name = mpm_bench::model_name(model);
@@ -81,6 +159,11 @@ const bool registered = [] {
     iteration->Arg(mpm_bench::bench_handles);
     benchmark::RegisterBenchmark(("BM_factor/" + name + "/arap").c_str(), BM_arap_preprocess, model)
         ->ArgName("handles")->Arg(mpm_bench::bench_handles)->Unit(benchmark::kMillisecond);
+    // Converging takes ARAP seconds on the large models: few runs.
+    benchmark::RegisterBenchmark(("BM_first_frame/" + name + "/arap").c_str(), BM_arap_first_frame, model)
+        ->ArgName("handles")->Arg(mpm_bench::bench_handles)->Unit(benchmark::kMillisecond)->Iterations(2);
+    benchmark::RegisterBenchmark(("BM_frame/" + name + "/arap").c_str(), BM_arap_frame, model)
+        ->ArgName("handles")->Arg(mpm_bench::bench_handles)->Unit(benchmark::kMillisecond)->Iterations(5);
   }
   return true;
 }();
