@@ -63,12 +63,12 @@ std::vector<std::vector<int>> chain_loops(std::multimap<int, int> out)
     while(it != out.end())
     {
       const int v = it->first;
-      const auto seen = position.find(v);
-      if(seen != position.end())
+      if(const auto seen = position.find(v); seen != position.end())
       {
-        loops.emplace_back(path.begin() + std::ptrdiff_t(seen->second), path.end());
-        for(auto k = seen->second; k < path.size(); ++k) position.erase(path[k]);
-        path.resize(seen->second);
+        const std::size_t first = seen->second; // `seen` goes with the erasures below
+        loops.emplace_back(path.begin() + std::ptrdiff_t(first), path.end());
+        for(std::size_t k = first; k < path.size(); ++k) position.erase(path[k]);
+        path.resize(first);
       }
       position[v] = path.size();
       path.push_back(v);
