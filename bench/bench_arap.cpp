@@ -29,13 +29,18 @@ void set_counters(benchmark::State& state, Bench_model model, const mpm_bench::M
   if(memory.extra_peak_mb() >= 0.) state.counters["peak_MB"] = memory.extra_peak_mb();
 }
 
+// Builds the model's cached handles (a real mesh is read here); on failure,
+// marks the benchmark as skipped with the message.
+bool handles_ready(benchmark::State& state, Bench_model model)
+{
+  const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
+  if(!error.empty()) state.SkipWithError(error.c_str());
+  return error.empty();
+}
+
 void BM_arap_iteration(benchmark::State& state, Bench_model model)
 {
-  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
-     !error.empty()) {
-    state.SkipWithError(error.c_str());
-    return;
-  }
+  if(!handles_ready(state, model)) return;
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
   try {
@@ -52,11 +57,7 @@ void BM_arap_iteration(benchmark::State& state, Bench_model model)
 
 void BM_arap_preprocess(benchmark::State& state, Bench_model model)
 {
-  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
-     !error.empty()) {
-    state.SkipWithError(error.c_str());
-    return;
-  }
+  if(!handles_ready(state, model)) return;
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
   try {
@@ -85,11 +86,7 @@ constexpr double converged_tolerance = 1e-4;
 // rest to convergence and positions() are.
 void BM_arap_first_frame(benchmark::State& state, Bench_model model)
 {
-  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
-     !error.empty()) {
-    state.SkipWithError(error.c_str());
-    return;
-  }
+  if(!handles_ready(state, model)) return;
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
   double iterations = 0.;
@@ -120,15 +117,9 @@ void BM_arap_first_frame(benchmark::State& state, Bench_model model)
 // frames), then deform() to convergence and positions().
 void BM_arap_frame(benchmark::State& state, Bench_model model)
 {
-  if(const std::string error = mpm_bench::prepare([&] { mpm_bench::farthest_handles(model, int(state.range(0))); });
-     !error.empty()) {
-    state.SkipWithError(error.c_str());
-    return;
-  }
+  if(!handles_ready(state, model)) return;
   CGAL::MPM::Handle_set handles = mpm_bench::farthest_handles(model, int(state.range(0)));
-  const CGAL::MPM::Point_matrix& rest = mpm_bench::bench_mesh(model).mesh.points;
-  const Eigen::RowVector3d drag = 0.01 * (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm() *
-                                  Eigen::RowVector3d(1., 1., 1.).normalized();
+  const Eigen::RowVector3d drag = mpm_bench::frame_drag(mpm_bench::bench_mesh(model).mesh.points);
   const mpm_bench::Memory_probe memory;
   double iterations = 0.;
   try {
@@ -137,7 +128,7 @@ void BM_arap_frame(benchmark::State& state, Bench_model model)
     arap.deform(converged_iterations, converged_tolerance);
     int frame = 0;
     for(auto _ : state) {
-      handles.targets.row(0) += (frame++ / 10) % 2 == 0 ? drag : Eigen::RowVector3d(-drag);
+      handles.targets.row(0) += mpm_bench::frame_direction(frame++) * drag;
       arap.set_handles(handles);
       iterations += arap.deform(converged_iterations, converged_tolerance);
       benchmark::DoNotOptimize(arap.positions().data());

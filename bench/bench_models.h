@@ -111,6 +111,18 @@ constexpr unsigned bench_pose_seed = 101;
 /// Number of farthest-point handles of the MPM/ARAP comparisons.
 constexpr int bench_handles = 16;
 
+/// The frame benchmarks' drag of the first handle, MPM's and ARAP's alike:
+/// 1% of the bounding-box diagonal of `rest` along (1, 1, 1) per frame,
+/// times `frame_direction()`.
+inline Eigen::RowVector3d frame_drag(const CGAL::MPM::Point_matrix& rest)
+{
+  const double diagonal = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
+  return 0.01 * diagonal * Eigen::RowVector3d(1., 1., 1.).normalized();
+}
+
+/// Back and forth every 10 frames (`frame` from 0).
+inline double frame_direction(int frame) { return (frame / 10) % 2 == 0 ? 1. : -1.; }
+
 inline const CGAL::MPM::Synthetic_model& synthetic_model(Bench_model which)
 {
   // Benchmarks run one at a time, so the caches need no lock.

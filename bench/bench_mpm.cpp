@@ -83,9 +83,11 @@ void set_counters(benchmark::State& state, Bench_model model, const mpm_bench::M
   if(memory.extra_peak_mb() >= 0.) state.counters["peak_MB"] = memory.extra_peak_mb();
 }
 
-double bbox_diagonal(const CGAL::MPM::Point_matrix& p)
+// Frames to convergence: iterations per frame, and the share that converged.
+void set_frame_counters(benchmark::State& state, double iterations, double converged)
 {
-  return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+  state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
+  state.counters["converged"] = benchmark::Counter(converged, benchmark::Counter::kAvgIterations);
 }
 
 // Builds the model's cached problem and handles (a real mesh is read and
@@ -174,10 +176,10 @@ void BM_frame(benchmark::State& state, Bench_model model, Global_step step, Spar
     mpm.solve();
     benchmark::DoNotOptimize(mpm.positions().data());
     CGAL::MPM::Point_matrix targets = handles.targets;
-    const Eigen::RowVector3d drag = 0.01 * bbox_diagonal(problem.mesh.points) * Eigen::RowVector3d(1., 1., 1.).normalized();
+    const Eigen::RowVector3d drag = mpm_bench::frame_drag(problem.mesh.points);
     int frame = 0;
     for(auto _ : state) {
-      targets.row(0) += (frame++ / 10) % 2 == 0 ? drag : Eigen::RowVector3d(-drag);
+      targets.row(0) += mpm_bench::frame_direction(frame++) * drag;
       mpm.set_handles(handles.vertices, targets);
       const CGAL::MPM::Solve_report report = mpm.solve();
       benchmark::DoNotOptimize(mpm.positions().data());
@@ -188,8 +190,7 @@ void BM_frame(benchmark::State& state, Bench_model model, Global_step step, Spar
     state.SkipWithError(e.what());
     return;
   }
-  state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
-  state.counters["converged"] = benchmark::Counter(converged, benchmark::Counter::kAvgIterations);
+  set_frame_counters(state, iterations, converged);
   set_counters(state, model, memory);
 }
 
@@ -222,8 +223,7 @@ void BM_first_frame(benchmark::State& state, Bench_model model, Global_step step
     state.SkipWithError(e.what());
     return;
   }
-  state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
-  state.counters["converged"] = benchmark::Counter(converged, benchmark::Counter::kAvgIterations);
+  set_frame_counters(state, iterations, converged);
   set_counters(state, model, memory);
 }
 
