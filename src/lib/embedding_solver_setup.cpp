@@ -452,10 +452,19 @@ void Embedding_solver::Impl::apply_update()
       plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
 }
 
+// The anchors' part of b0: each anchored vertex pulled to its rest position.
+Point_matrix Embedding_solver::Impl::anchor_right_hand_side() const
+{
+  Point_matrix b = Point_matrix::Zero(n, 3);
+  for(int v = 0; v < n; ++v)
+    if(anchor[v] > 0) b.row(v) = anchor[v] * mesh.points.row(v);
+  return b;
+}
+
 // A11^-1 b0. A drag moves the targets of the same handles, so with few
 // handles the solutions for each handle's unit right-hand side (and for the
 // anchors) are kept per handle set, and a new target costs n x k products
-// instead of a back-substitution (15-20 ms of a 64k-vertex frame).
+// instead of a back-substitution (measured: 4 ms less in a 64k-vertex frame).
 Eigen::MatrixXd Embedding_solver::Impl::handle_solution()
 {
   constexpr std::size_t max_kept_columns = 48;
@@ -465,8 +474,7 @@ Eigen::MatrixXd Embedding_solver::Impl::handle_solution()
     const Eigen::Index k = Eigen::Index(handle_vertices.size());
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, k + 3);
     for(Eigen::Index h = 0; h < k; ++h) rhs(handle_vertices[std::size_t(h)], h) = 1.;
-    for(int v = 0; v < n; ++v)
-      if(anchor[v] > 0) rhs.row(v).tail<3>() = anchor[v] * mesh.points.row(v);
+    rhs.rightCols<3>() = anchor_right_hand_side();
     const Eigen::MatrixXd solved = solve_a11(rhs);
     handle_columns = solved.leftCols(k);
     anchor_solution = solved.rightCols<3>();
@@ -479,9 +487,7 @@ Eigen::MatrixXd Embedding_solver::Impl::handle_solution()
 void Embedding_solver::Impl::prepare_handle_terms()
 {
   if(!factored) factor();
-  b0 = Point_matrix::Zero(n, 3);
-  for(int v = 0; v < n; ++v)
-    if(anchor[v] > 0) b0.row(v) = anchor[v] * mesh.points.row(v);
+  b0 = anchor_right_hand_side();
   const double handle_weight = options.handle_weight * mean_diagonal;
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     b0.row(handle_vertices[h]) += handle_weight * handle_targets.row(h);

@@ -175,6 +175,7 @@ struct Embedding_solver::Impl
   bool update_handle_set(const std::vector<int>& vertices);
   void apply_update();
   Eigen::MatrixXd solve_a11(const Eigen::MatrixXd& rhs) const;
+  Point_matrix anchor_right_hand_side() const;
   Eigen::MatrixXd handle_solution();
   void prepare_handle_terms();
   Eigen::MatrixXd scatter(const Cluster_data& c, const Point_matrix& local) const;
