@@ -1,0 +1,95 @@
+# The whole pipeline from Python: synthesize, cut, propose, learn from
+# several meshes, fit, edit, assemble, spawn, compare, on synthetic and
+# real segmented meshes.
+import os
+
+import numpy as np
+import pytest
+
+import cgal_mpm as mpm
+
+
+def diagonal(V):
+    return np.linalg.norm(np.ptp(V, axis=0))
+
+
+def test_edits_keep_the_hand_whole(hand_model):
+    rest = hand_model.examples[0]
+    for V, report in (mpm.symmetrize(hand_model), mpm.caricature(hand_model, 1.5)):
+        assert report["converged"] and V.shape == rest["V"].shape
+        check = mpm.check_surface(V, rest["F"], reference_V=rest["V"], groups=rest["labels"])
+        assert check["components"] == 1 and check["border_edges"] == 0 and check["inverted_faces"] == 0
+
+
+def test_held_out_pose_is_reached_better_than_by_the_baselines(hand, hand_model, pose_handles):
+    truth = hand.draw_pose(7)
+    errors = {}
+    for method in ("mpm", "arap", "laplacian"):
+        V, _ = mpm.deform_with(method, hand_model, *pose_handles)
+        errors[method] = np.sqrt(((V - truth) ** 2).sum(axis=1).mean()) / diagonal(truth)
+    assert errors["mpm"] < errors["arap"] and errors["mpm"] < errors["laplacian"]
+    assert errors["mpm"] < 0.02
+
+
+def test_learning_from_several_meshes_pools_the_instances(hand):
+    other = mpm.synthesize("hand", seed=2, vertices=3000)
+    model = mpm.learn([hand, other])
+    assert len(model.examples) == 2
+    assert model.types[model.find_type("middle")]["instances"] == 10
+
+
+def test_fit_recovers_a_pose_of_the_training_shape(hand, hand_model):
+    V = hand.draw_pose(3)
+    fit = mpm.fit(hand_model, V, hand.F, hand.labels)
+    assert len(fit["segments"]) == 16 and not fit["skipped"]
+    assert fit["rms_over_mesh_diagonal"] < 0.01
+    fitted_V, fitted_F, fitted_labels = fit["fitted_surface"]
+    assert fitted_F.max() < len(fitted_V) and len(fitted_labels) == len(fitted_F)
+
+
+def test_assembly_grows_a_finger_seamlessly(hand_model):
+    model = mpm.Model.from_bytes(hand_model.to_bytes())
+    added = mpm.add_repetition_rules(model)
+    assert added
+    graph = mpm.part_graph(model)
+    edge = next(i for i, e in enumerate(graph.edges)
+                if graph.node_types(model)[e["first"]]["type"] == "proximal"
+                and graph.node_types(model)[e["second"]]["type"] == "middle")
+    node = mpm.insert_segment(model, graph, edge)
+    assert node == 16 and len(graph.nodes) == 17
+    result = mpm.assemble(model, graph)
+    assert result["converged"] and result["V"].shape[0] > model.examples[0]["V"].shape[0]
+    check = mpm.check_surface(result["V"], result["F"])
+    assert check["components"] == 1 and check["border_edges"] == 0
+    spawned = mpm.spawn(model, mpm.part_graph(model), count=3, seed=4)
+    energies = [s["assembly"]["energy_per_part"] for s in spawned]
+    assert len(spawned) == 3 and energies == sorted(energies)
+
+
+def test_cut_then_propose_then_learn(hand):
+    # Cut the synthetic hand's finger tips off along their seams: a cut
+    # through the vertices a tip shares with its middle segment.
+    F, labels = hand.F, hand.labels
+    tip = hand.instances[-1]
+    tip_vertices = set(F[labels == tip["label"]].ravel())
+    seam = [v for v in tip_vertices if (labels[(F == v).any(axis=1)] != tip["label"]).any()]
+    result = mpm.cut(hand.V, F, [seam[:: max(1, len(seam) // 4)]])
+    assert result["regions"] == 2 and len(result["lengths"]) == 1
+    proposal = mpm.propose_part_types(hand.V, F, hand.labels)
+    assert proposal["root"] == 0 and len(proposal["segments"]) == 16
+    assert {s["type"] for s in proposal["segments"]} >= {"root", "tip3"}
+
+
+def test_a_real_segmented_hand(psb_dir):
+    V, F, labels = mpm.read_labeled_mesh(os.path.join(psb_dir, "hand_181.off"), os.path.join(psb_dir, "hand_181.seg"))
+    proposal = mpm.propose_part_types(V, F, labels)
+    model = mpm.learn((V, F, labels))  # types proposed as by `mpm learn`
+    assert sorted(t["name"] for t in model.types) == sorted({s["type"] for s in proposal["segments"]})
+    rest = model.examples[0]
+    vertices, targets = mpm.handles_per_part(model, 1)
+    targets[-1] += 0.05 * diagonal(rest["V"])
+    V2, report = mpm.deform(model, vertices, targets)
+    assert report["converged"]
+    check = mpm.check_surface(V2, rest["F"])
+    assert check["components"] == 1 and check["border_edges"] == 0
+    assert np.linalg.norm(V2[vertices[-1]] - targets[-1]) < 0.01 * diagonal(rest["V"])
