@@ -3,6 +3,8 @@
 # Usage: bench/run_benchmarks.sh [build-dir] [output-dir] [mpm_bench flags...]
 #   defaults: build-bench, <build-dir>/bench-results, --benchmark_min_time=1
 #   REUSE_JSON=1: only regenerate the table from an earlier <output-dir>/bench.json
+#   (and <output-dir>/python_drag.json, the Python drag overhead measured by
+#   bench/python_drag_overhead.py when the cgal_mpm module is built)
 #   MPM_DATA_DIR: where the real meshes are (default <build-dir>/data, filled
 #   from Debian's libcgal-demo data, /usr/share/doc/libcgal-dev/data.tar.gz;
 #   the package is installed when run as root, else the command is printed
@@ -44,8 +46,13 @@ if [ -n "$missing" ] && [ -z "${REUSE_JSON:-}" ]; then
 fi
 
 [ -n "${REUSE_JSON:-}" ] || "$build/bench/mpm_bench" --benchmark_out="$out/bench.json" --benchmark_out_format=json "$@"
-python3 - "$out/bench.json" "$root/doc/MPM/Performance.md" <<'PY'
-import json, sys
+# A drag from Python against the same drag from C++ (when the module is built).
+if ls "$build"/python/cgal_mpm*.so >/dev/null 2>&1 && { [ -z "${REUSE_JSON:-}" ] || [ ! -f "$out/python_drag.json" ]; }; then
+  PYTHONPATH="$build/python" /usr/bin/python3 "$root/bench/python_drag_overhead.py" \
+    --reference "$build/python/mpm_python_reference" -o "$out/python_drag.json" > /dev/null
+fi
+python3 - "$out/bench.json" "$root/doc/MPM/Performance.md" "$out/python_drag.json" <<'PY'
+import json, os, sys
 data = json.load(open(sys.argv[1]))
 rows = {}  # (kind, model, variant) -> benchmark, variant "arap" or "mpm_<step>_<solver>"
 for b in data["benchmarks"]:
@@ -164,6 +171,24 @@ out += ["", "## Learning", "", "| model | vertices | learning ms | peak MB |", "
 for m in models:
     b = get("BM_learn", m, "")
     if b: out.append("| %s | %d | %s | %s |" % (m, b["vertices"], fmt(ms(b), "%.0f"), fmt(b.get("peak_MB"), "%.0f")))
+
+if os.path.exists(sys.argv[3]):
+    p = json.load(open(sys.argv[3]))
+    out += ["", "## From Python", "",
+            "`bench/python_drag_overhead.py`: the synthetic hand, one handle per part, the first dragged back and forth by",
+            "1% of the diagonal per frame; each frame moves the handle, solves to convergence and reads the positions,",
+            "through `cgal_mpm.Editor` (which returns a new numpy array of the positions each frame) and through the C++",
+            "API (`mpm_python_reference drag`, which reads them in place). Both run the same iterations to the same",
+            "positions; medians of %d alternating rounds of %d drags (%d CPUs, load %s)."
+            % (p["rounds"], p["drags"], p["cpus"], ", ".join("%.1f" % x for x in p["load_average"])), "",
+            "| model | vertices | iterations/drag | C++ ms/drag | Python ms/drag | Python overhead |",
+            "|---|---:|---:|---:|---:|---:|",
+            "| hand | %d | %.2f | %s | %s | %.1f%% |" % (p["vertices"], p["iterations_per_drag"], fmt(p["cpp_ms_per_drag"]),
+                                                      fmt(p["python_ms_per_drag"]), 100 * p["overhead"]), "",
+            "What the binding adds to a frame, timed alone: `move_handles()` %s ms, reading `positions` (a new %d x 3"
+            % (fmt(p["move_handles_ms"]), p["vertices"]),
+            "array) %s ms. Rounds: C++ %s ms, Python %s ms per drag; the rest of the difference is run-to-run variation."
+            % (fmt(p["positions_ms"]), ", ".join(fmt(x) for x in p["cpp_rounds"]), ", ".join(fmt(x) for x in p["python_rounds"]))]
 open(sys.argv[2], "w").write("\n".join(out) + "\n")
 print("wrote", sys.argv[2])
 PY

@@ -111,7 +111,7 @@ void bind_synthetic(py::module_& m)
 {
   py::class_<Synthetic>(m, "Synthetic", "A synthetic family member with its ground truth (see `synthesize`).")
     .def_property_readonly("family", [](const Synthetic& s) { return family_name(s.model().family); },
-                           "Family name.")
+                           "The family's name, as families() lists it.")
     .def_property_readonly("V", [](const Synthetic& s) { return points_array(Point_matrix(s.model().mesh.mesh.points)); },
                            "Vertex positions, n x 3 float64.")
     .def_property_readonly("F", [](const Synthetic& s) {
