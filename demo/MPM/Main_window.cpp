@@ -174,6 +174,7 @@ Main_window::Main_window(Session& session) : session_(session)
   solver_label_ = new QLabel(this);
   statusBar()->addPermanentWidget(solver_label_);
   connect(&session_, &Session::positions_changed, this, &Main_window::on_frame);
+  connect(&session_, &Session::frame_displayed, this, &Main_window::on_frame);
   connect(&session_, &Session::scene_changed, this, [this] {
     sync_controls();
     on_part_selected(-1);
@@ -252,11 +253,12 @@ QString Main_window::solver_status() const
 {
   const Solve_frame& f = session_.last_frame();
   if(!f.error.isEmpty()) return "solver: " + f.error;
-  QString s = QString("MPM: %1 iterations%2, energy %3, %4 ms/frame")
+  QString s = QString("MPM: %1 iterations%2, energy %3, solver %4 ms/frame")
                 .arg(f.iterations)
                 .arg(f.converged ? "" : " (cap)")
                 .arg(f.energy, 0, 'g', 4)
                 .arg(f.ms, 0, 'f', 1);
+  if(f.shown_ms >= 0.) s += QString(", shown %1 ms after the move").arg(f.shown_ms, 0, 'f', 1);
   if(session_.arap())
     s += f.arap_error.isEmpty() ? QString(" | ARAP: %1 iterations, %2 ms").arg(f.arap_iterations).arg(f.arap_ms, 0, 'f', 1)
                                 : " | ARAP: " + f.arap_error;

@@ -98,6 +98,7 @@ void Solver_thread::run()
     {
       f = Solve_frame();
       f.serial = r.serial;
+      f.posted = r.posted;
       arap_iterations = 0;
       try
       {
@@ -116,6 +117,7 @@ void Solver_thread::run()
           solver->reset();
           if(arap) arap->reset();
         }
+        const auto start = std::chrono::steady_clock::now();
         if(!r.handle_vertices.empty())
         {
           solver->set_handles(r.handle_vertices, r.handle_targets);
@@ -126,11 +128,10 @@ void Solver_thread::run()
           solver->clear_handles();
           solver_has_handles = false;
         }
-        const auto start = std::chrono::steady_clock::now();
         const MPM::Solve_report report = solver->solve();
-        f.ms = milliseconds_since(start);
         f.positions = r.unfold ? MPM::unfold_faces(r.problem->mesh, solver->positions(), r.handle_vertices)
                                : solver->positions();
+        f.ms = milliseconds_since(start);
         f.iterations = report.iterations;
         f.converged = report.converged;
         f.energy = report.energy();
@@ -344,6 +345,7 @@ void Session::post(bool restart)
   r.arap = arap_;
   r.restart = restart;
   r.unfold = mode_ != Edit_mode::deform;
+  r.posted = std::chrono::steady_clock::now();
   thread_.post(std::move(r));
 }
 
@@ -352,10 +354,19 @@ void Session::on_frame(const Solve_frame& frame)
   // A frame of a request older than the current scene has other vertices.
   if(frame.positions.rows() != 0 && frame.positions.rows() != rest_.points.rows()) return;
   if(frame.arap_positions.rows() != 0 && frame.arap_positions.rows() != rest_.points.rows()) return;
-  const Point_matrix previous = frame_.positions;
+  Point_matrix previous = std::move(frame_.positions);
   frame_ = frame;
-  if(frame_.positions.rows() == 0) frame_.positions = previous.rows() == rest_.points.rows() ? previous : rest_.points;
+  if(frame_.positions.rows() == 0)
+    frame_.positions = previous.rows() == rest_.points.rows() ? std::move(previous) : rest_.points;
   Q_EMIT positions_changed();
+}
+
+void Session::frame_shown(double paint_ms)
+{
+  if(!frame_awaits_display()) return;
+  frame_.shown_ms = milliseconds_since(frame_.posted);
+  frame_.paint_ms = paint_ms;
+  Q_EMIT frame_displayed();
 }
 
 bool Session::wait_until_solved(int timeout_ms)

@@ -20,6 +20,7 @@
 #include <QWaitCondition>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -55,6 +56,8 @@ struct Solve_request
   /// Take the folds out of the result (`unfold_faces()`), as `mpm` does for
   /// what it writes; not for drags, whose frames it would slow down.
   bool unfold = false;
+  /// When the request was made (the mouse move), for the display latency.
+  std::chrono::steady_clock::time_point posted;
 };
 
 /// What the solver thread reports for one request.
@@ -66,12 +69,20 @@ struct Solve_frame
   int iterations = 0;
   bool converged = false;
   double energy = 0.;
-  double ms = 0.;              ///< MPM solve time of this frame
+  /// MPM's frame in the solver thread: new handle targets, `solve()` and the
+  /// positions, as `mpm_bench`'s frame measures it.
+  double ms = 0.;
   int arap_iterations = 0;
   double arap_ms = 0.;
   QString error;               ///< the MPM solve failed (positions are the previous ones)
   QString arap_error;          ///< why there is no ARAP result
   bool final = true;           ///< the last frame of its request (ARAP may send several)
+  std::chrono::steady_clock::time_point posted; ///< when its request was made
+  /// From the request to the end of the paint that showed the frame (the
+  /// viewer sets it, `Session::frame_shown()`); negative until shown.
+  double shown_ms = -1.;
+  /// The paint that showed it: building the arrays, drawing, the GL's finish.
+  double paint_ms = 0.;
 };
 
 /// Runs `Embedding_solver::solve()` (reduced global step, warm started) and
@@ -137,6 +148,12 @@ public:
   const CGAL::MPM::Part_graph& shown_graph() const;
   bool graph_edited() const { return graph_edited_; }
   const Solve_frame& last_frame() const { return frame_; }
+  /// Whether the last frame came from a request and no paint has shown it yet.
+  bool frame_awaits_display() const
+  { return frame_.shown_ms < 0. && frame_.posted != std::chrono::steady_clock::time_point(); }
+  /// Called by the viewer when a paint of `paint_ms` has shown the last
+  /// frame: records the display latency and emits `frame_displayed()`.
+  void frame_shown(double paint_ms);
   /// @}
 
   /// \name Handles (indices into the handle list; a group moves together)
@@ -205,6 +222,8 @@ Q_SIGNALS:
   void scene_changed();
   /// A new solver frame arrived.
   void positions_changed();
+  /// The last frame was painted (its `shown_ms` is set).
+  void frame_displayed();
 
 private:
   void adopt_model(CGAL::MPM::Morphable_part_model&& model, const QString& source, const std::string& family = "");

@@ -12,6 +12,7 @@
 #include <QMouseEvent>
 
 #include <cmath>
+#include <chrono>
 #include <limits>
 
 namespace mpm_demo {
@@ -56,30 +57,28 @@ namespace {
 
 const char* const vertex_shader = R"(#version 150
 in highp vec3 vertex;
-in highp vec3 normal;
 in highp vec3 color;
 uniform highp mat4 mvp_matrix;
 uniform highp mat4 mv_matrix;
 uniform highp vec3 offset;
 uniform highp float point_size;
 out highp vec3 f_position;
-out highp vec3 f_normal;
 out highp vec3 f_color;
 void main(void)
 {
   vec4 p = vec4(vertex + offset, 1.0);
   f_position = (mv_matrix * p).xyz;
-  f_normal = mat3(mv_matrix) * normal;
   f_color = color;
   gl_PointSize = point_size;
   gl_Position = mvp_matrix * p;
 }
 )";
 
-// A head light, two-sided (open parts show their inside).
+// A head light, two-sided (open parts show their inside). Faces are flat:
+// the normal is that of the face's plane, from the screen-space derivatives
+// of the position, so a frame uploads positions only.
 const char* const fragment_shader = R"(#version 150
 in highp vec3 f_position;
-in highp vec3 f_normal;
 in highp vec3 f_color;
 uniform bool lighting;
 uniform bool round_points;
@@ -88,7 +87,7 @@ void main(void)
 {
   if(round_points && length(gl_PointCoord - vec2(0.5)) > 0.5) discard;
   if(!lighting) { out_color = vec4(f_color, 1.0); return; }
-  vec3 n = normalize(f_normal);
+  vec3 n = normalize(cross(dFdx(f_position), dFdy(f_position)));
   vec3 l = normalize(-f_position);
   float diffuse = abs(dot(n, l));
   float specular = pow(max(dot(reflect(-l, n * sign(dot(n, l))), l), 0.0), 32.0);
@@ -110,7 +109,13 @@ Viewer::Viewer(Session& session, QWidget* parent) : CGAL::QGLViewer(parent), ses
 Viewer::~Viewer()
 {
   makeCurrent();
-  for(QOpenGLBuffer& b : buffers_) b.destroy();
+  for(Mesh_buffers& m : meshes_)
+  {
+    m.corners.destroy();
+    m.colors.destroy();
+  }
+  scratch_positions_.destroy();
+  scratch_colors_.destroy();
   vao_.destroy();
   doneCurrent();
 }
@@ -127,7 +132,13 @@ void Viewer::init()
     return;
   }
   vao_.create();
-  for(QOpenGLBuffer& b : buffers_) b.create();
+  for(Mesh_buffers& m : meshes_)
+  {
+    m.corners.create();
+    m.colors.create();
+  }
+  scratch_positions_.create();
+  scratch_colors_.create();
   gl_ready_ = true;
   frame_scene();
 }
@@ -137,12 +148,14 @@ void Viewer::on_scene_changed()
   selected_part_ = -1;
   dragged_handle_ = -1;
   tree_dirty_ = true;
+  for(Mesh_buffers& m : meshes_) m.corners_dirty = m.colors_dirty = true;
   frame_scene();
 }
 
 void Viewer::on_positions_changed()
 {
   tree_dirty_ = true;
+  for(Mesh_buffers& m : meshes_) m.corners_dirty = true;
   update();
 }
 
@@ -212,49 +225,70 @@ void Viewer::set_view(double azimuth, double elevation)
 void Viewer::select_part(int node)
 {
   selected_part_ = node;
+  meshes_[0].colors_dirty = true;
   update();
 }
 
-void Viewer::upload(const Point_matrix& p, const Vec& offset, bool highlight)
+namespace {
+
+// Fills `buffer` with `data`, reallocating only when the size changed.
+void fill(QOpenGLBuffer& buffer, const std::vector<float>& data)
 {
-  const CGAL::MPM::Indexed_mesh& rest = session_.rest();
-  const std::vector<int>& types = session_.face_types();
-  const std::vector<int>& nodes = session_.face_nodes();
-  std::vector<float> xyz, normals, colors;
-  xyz.reserve(rest.triangles.size() * 9);
-  normals.reserve(rest.triangles.size() * 9);
-  colors.reserve(rest.triangles.size() * 9);
-  for(std::size_t f = 0; f < rest.triangles.size(); ++f)
+  const int bytes = int(data.size() * sizeof(float));
+  buffer.bind();
+  if(buffer.size() == bytes) buffer.write(0, data.data(), bytes);
+  else buffer.allocate(data.data(), bytes);
+  buffer.release();
+}
+
+} // namespace
+
+void Viewer::upload(Mesh_buffers& mesh, const Point_matrix& p, bool highlight)
+{
+  const std::vector<CGAL::MPM::Triangle>& triangles = session_.rest().triangles;
+  if(mesh.corners_dirty)
   {
-    const CGAL::MPM::Triangle& t = rest.triangles[f];
-    const Eigen::RowVector3d n = (p.row(t[1]) - p.row(t[0])).cross(p.row(t[2]) - p.row(t[0])).normalized();
-    CGAL::MPM::Rgb_color c = CGAL::MPM::part_type_color(types[f]);
-    float boost = highlight && nodes[f] == selected_part_ ? 0.45f : 0.f;
-    for(int k = 0; k < 3; ++k)
+    scratch_.resize(triangles.size() * 9);
+    float* out = scratch_.data();
+    for(const CGAL::MPM::Triangle& t : triangles)
+      for(int v : t)
+        for(int d = 0; d < 3; ++d) *out++ = float(p(v, d));
+    fill(mesh.corners, scratch_);
+    mesh.corners_dirty = false;
+  }
+  if(mesh.colors_dirty)
+  {
+    const std::vector<int>& types = session_.face_types();
+    const std::vector<int>& nodes = session_.face_nodes();
+    scratch_.resize(triangles.size() * 9);
+    float* out = scratch_.data();
+    for(std::size_t f = 0; f < triangles.size(); ++f)
     {
-      for(int d = 0; d < 3; ++d)
-      {
-        xyz.push_back(float(p(t[k], d)));
-        normals.push_back(float(n(d)));
-        colors.push_back(float(c[d]) / 255.f * (1.f - boost) + boost);
-      }
+      const CGAL::MPM::Rgb_color c = CGAL::MPM::part_type_color(types[f]);
+      const float boost = highlight && nodes[f] == selected_part_ ? 0.45f : 0.f;
+      for(int k = 0; k < 3; ++k)
+        for(int d = 0; d < 3; ++d) *out++ = float(c[d]) / 255.f * (1.f - boost) + boost;
     }
+    fill(mesh.colors, scratch_);
+    mesh.colors_dirty = false;
   }
-  const std::vector<float>* data[3] = {&xyz, &normals, &colors};
-  const char* names[3] = {"vertex", "normal", "color"};
+}
+
+void Viewer::draw_mesh(Mesh_buffers& mesh, const Point_matrix& p, const Vec& offset, bool highlight)
+{
+  upload(mesh, p, highlight);
   vao_.bind();
-  for(int i = 0; i < 3; ++i)
-  {
-    buffers_[i].bind();
-    buffers_[i].allocate(data[i]->data(), int(data[i]->size() * sizeof(float)));
-    program_.enableAttributeArray(names[i]);
-    program_.setAttributeBuffer(names[i], GL_FLOAT, 0, 3);
-    buffers_[i].release();
-  }
+  mesh.corners.bind();
+  program_.enableAttributeArray("vertex");
+  program_.setAttributeBuffer("vertex", GL_FLOAT, 0, 3);
+  mesh.colors.bind();
+  program_.enableAttributeArray("color");
+  program_.setAttributeBuffer("color", GL_FLOAT, 0, 3);
+  mesh.colors.release();
   program_.setUniformValue("offset", QVector3D(float(offset.x), float(offset.y), float(offset.z)));
   program_.setUniformValue("lighting", true);
   program_.setUniformValue("point_size", 1.f);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(xyz.size() / 3));
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(session_.rest().triangles.size() * 3));
 
   // Seams as dark lines, slightly in front of the surface.
   if(show_seams && !session_.seam_edges().empty())
@@ -267,19 +301,26 @@ void Viewer::upload(const Point_matrix& p, const Vec& offset, bool highlight)
           lines.push_back(float(p(v, d)));
           line_colors.push_back(0.1f);
         }
-    buffers_[0].bind();
-    buffers_[0].allocate(lines.data(), int(lines.size() * sizeof(float)));
-    buffers_[0].release();
-    buffers_[2].bind();
-    buffers_[2].allocate(line_colors.data(), int(line_colors.size() * sizeof(float)));
-    buffers_[2].release();
+    bind_scratch(lines, line_colors);
     program_.setUniformValue("lighting", false);
-    program_.disableAttributeArray("normal");
     glDepthFunc(GL_LEQUAL);
     glDrawArrays(GL_LINES, 0, GLsizei(lines.size() / 3));
     glDepthFunc(GL_LESS);
   }
   vao_.release();
+}
+
+void Viewer::bind_scratch(const std::vector<float>& xyz, const std::vector<float>& colors)
+{
+  fill(scratch_positions_, xyz);
+  fill(scratch_colors_, colors);
+  scratch_positions_.bind();
+  program_.enableAttributeArray("vertex");
+  program_.setAttributeBuffer("vertex", GL_FLOAT, 0, 3);
+  scratch_colors_.bind();
+  program_.enableAttributeArray("color");
+  program_.setAttributeBuffer("color", GL_FLOAT, 0, 3);
+  scratch_colors_.release();
 }
 
 void Viewer::draw_points(const std::vector<float>& xyz, const QColor& color, float size)
@@ -294,13 +335,7 @@ void Viewer::draw_points(const std::vector<float>& xyz, const QColor& color, flo
     colors.push_back(float(color.blueF()));
   }
   vao_.bind();
-  buffers_[0].bind();
-  buffers_[0].allocate(xyz.data(), int(xyz.size() * sizeof(float)));
-  buffers_[0].release();
-  buffers_[2].bind();
-  buffers_[2].allocate(colors.data(), int(colors.size() * sizeof(float)));
-  buffers_[2].release();
-  program_.disableAttributeArray("normal");
+  bind_scratch(xyz, colors);
   program_.setUniformValue("offset", QVector3D(0, 0, 0));
   program_.setUniformValue("lighting", false);
   program_.setUniformValue("point_size", size);
@@ -313,6 +348,7 @@ void Viewer::draw_points(const std::vector<float>& xyz, const QColor& color, flo
 void Viewer::draw()
 {
   if(!gl_ready_ || session_.rest().points.rows() == 0) return;
+  const auto start = std::chrono::steady_clock::now();
   const Point_matrix& p = session_.positions();
   if(p.rows() != session_.rest().points.rows()) return;
 
@@ -330,8 +366,8 @@ void Viewer::draw()
   program_.setUniformValue("mv_matrix", mv);
 
   const Vec shift = split() ? split_offset() : Vec(0, 0, 0);
-  upload(p, -shift, true);
-  if(split()) upload(session_.arap_positions(), shift, false);
+  draw_mesh(meshes_[0], p, -shift, true);
+  if(split()) draw_mesh(meshes_[1], session_.arap_positions(), shift, false);
 
   std::vector<float> sites, handles, dragged;
   const auto push = [&](std::vector<float>& out, const Eigen::RowVector3d& x) {
@@ -351,6 +387,13 @@ void Viewer::draw()
   glEnable(GL_DEPTH_TEST);
   draw_points(sites, QColor(255, 255, 255), 2.f);
   program_.release();
+  if(session_.frame_awaits_display())
+  {
+    // The first paint of a new frame: wait for the GL to finish it, so that
+    // the latency the status bar shows is the whole way to the screen.
+    glFinish();
+    session_.frame_shown(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
 
   if(split())
   {

@@ -62,13 +62,29 @@ private:
   /// World offset of the MPM mesh (left) and of the ARAP mesh (right).
   CGAL::qglviewer::Vec split_offset() const;
   bool split() const;
-  void upload(const Point_matrix& positions, const CGAL::qglviewer::Vec& offset, bool highlight);
+  /// A drawn mesh's buffers: three corners per face (positions, and colours
+  /// by part type), filled again only when the positions or colours changed.
+  struct Mesh_buffers
+  {
+    QOpenGLBuffer corners{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer colors{QOpenGLBuffer::VertexBuffer};
+    bool corners_dirty = true;
+    bool colors_dirty = true;
+  };
+  void upload(Mesh_buffers& mesh, const Point_matrix& positions, bool highlight);
+  void draw_mesh(Mesh_buffers& mesh, const Point_matrix& positions, const CGAL::qglviewer::Vec& offset,
+                 bool highlight);
+  /// Binds `xyz` and `colors` (one RGB per point) as the vertex attributes
+  /// of a small drawing (lines, points).
+  void bind_scratch(const std::vector<float>& xyz, const std::vector<float>& colors);
   void draw_points(const std::vector<float>& xyz, const QColor& color, float size);
 
   Session& session_;
   QOpenGLShaderProgram program_;
   QOpenGLVertexArrayObject vao_;
-  QOpenGLBuffer buffers_[3]; // positions, normals, colours
+  Mesh_buffers meshes_[2]; // MPM's mesh, ARAP's beside it
+  QOpenGLBuffer scratch_positions_, scratch_colors_;
+  std::vector<float> scratch_;
   bool gl_ready_ = false;
   std::unique_ptr<Picking_tree> tree_;
   bool tree_dirty_ = true;

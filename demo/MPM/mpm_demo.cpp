@@ -186,6 +186,34 @@ private:
     std::cout << "  " << window_.solver_status().toStdString() << "\n";
   }
 
+  // Drags handle 0 back and forth (0.2% of the diagonal per frame, turning
+  // every 10 frames), each frame solved and painted before the next, and
+  // prints the mean solver frame and the mean time from the drag to the end
+  // of the paint that showed it.
+  void profile_drag(int frames)
+  {
+    if(frames < 1) throw Script_error("profile-drag needs at least one frame");
+    if(session_.handle_vertices().empty()) throw Script_error("profile-drag needs a handle (add one first)");
+    const Point_matrix& p = session_.rest().points;
+    const double diagonal = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const Eigen::RowVector3d step = 0.002 * diagonal * Eigen::RowVector3d(1., 1., 1.).normalized();
+    double solver_ms = 0., shown_ms = 0., paint_ms = 0.;
+    for(int i = 0; i < frames; ++i)
+    {
+      session_.drag_handle(0, ((i / 10) % 2 == 0 ? 1. : -1.) * step);
+      settle();
+      if(session_.frame_awaits_display()) window_.viewer().repaint();
+      const Solve_frame& f = session_.last_frame();
+      if(f.shown_ms < 0.) throw Script_error("frame " + std::to_string(i) + " was not shown");
+      solver_ms += f.ms;
+      shown_ms += f.shown_ms;
+      paint_ms += f.paint_ms;
+    }
+    std::cout << "  " << frames << " frames of " << p.rows() << " vertices: solver " << solver_ms / frames
+              << " ms, shown " << shown_ms / frames << " ms after the drag (display adds "
+              << (shown_ms - solver_ms) / frames << " ms, of which the paint " << paint_ms / frames << " ms)\n";
+  }
+
   void report_model()
   {
     const Point_matrix& p = session_.rest().points;
@@ -249,6 +277,11 @@ private:
       const double diagonal = p.rows() ? (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm() : 0.;
       session_.drag_handle(integer(w[1]), diagonal * Eigen::RowVector3d(number(w[2]), number(w[3]), number(w[4])));
       report();
+    }
+    else if(c == "profile-drag")
+    {
+      arity(w, 1, 1, "profile-drag FRAMES");
+      profile_drag(integer(w[1]));
     }
     else if(c == "deform" || c == "symmetrize" || c == "caricature")
     {

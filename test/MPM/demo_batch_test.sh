@@ -35,6 +35,8 @@ click 160 130 alt
 handles per-part 1
 drag 0 0.15 0.1 0.05
 screenshot $out/drag.png
+# every frame of a drag is solved and painted, with its latency measured
+profile-drag 5
 symmetrize 0.01
 screenshot $out/symmetrize.png
 deform
@@ -48,7 +50,11 @@ compare-images $out/drag.png $out/symmetrize.png
 compare-images $out/symmetrize.png $out/insert.png
 compare-images $out/rest.png $out/insert.png
 SCRIPT
-run "$out/edit.txt"
+run "$out/edit.txt" | tee "$out/edit.log"
+if ! grep -q "5 frames of [0-9]* vertices: solver .* ms, shown .* ms after the drag" "$out/edit.log"; then
+  echo "FAIL: profile-drag did not report its frames" >&2
+  exit 1
+fi
 
 printf 'size 128 128\nsynth hand 1500\nfrobnicate 1 2\n' > "$out/bad.txt"
 if run "$out/bad.txt" 2> "$out/bad.err"; then
