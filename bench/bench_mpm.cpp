@@ -5,7 +5,10 @@
 //   BM_iteration/<model>/mpm_<step>_<solver>/handles:16  one iterate()
 //   BM_factor/<model>/mpm_<step>_<solver>/handles:16     solver construction + set_handles + first iterate()
 //   BM_frame/<model>/mpm_<step>_<solver>/handles:16      drag one handle by 1% of the bbox diagonal, solve(), positions()
-//   BM_first_frame/<model>/mpm_reduced_<solver>/handles:16  set_handles() on a built solver, solve() from rest, positions()
+//   BM_first_frame/<model>/mpm_reduced_<solver>/handles:16  set_handles() on a solver built and preprocessed
+//                                                        without handles, solve() from rest, positions()
+//   BM_handle_set/<model>/mpm_reduced_<solver>/handles:16   set_handles() and preprocess() on a solver built and
+//                                                        preprocessed without handles (a new handle set)
 //   BM_learn/<model>                                     learn_morphable_part_model()
 // <step> is every Global_step (direct only on the 3k hand: it refactors every
 // iteration), <solver> is ldlt (Eigen SimplicialLDLT) or cholmod (when the
@@ -197,6 +200,36 @@ void BM_frame(benchmark::State& state, Bench_model model, Global_step step, Spar
 // The wait after choosing handles, as the user meets it: the solver is
 // built when the model is loaded (not timed); set_handles() (factorization
 // and blocks), solve() from rest to convergence and positions() are.
+// What a new handle set costs once the model is loaded: on a solver built
+// and preprocessed without handles, set_handles() and preprocess() (the
+// low-rank update of the factored block and the handle terms). The one-time
+// part, the factorization without handles, is BM_factor's.
+void BM_handle_set(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
+{
+  if(!fixtures_ready(state, model)) return;
+  const Embedding_problem& problem = mpm_bench::deformation_problem(model);
+  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
+  const mpm_bench::Memory_probe memory;
+  try {
+    for(auto _ : state) {
+      state.PauseTiming();
+      std::optional<Embedding_solver> mpm;
+      mpm.emplace(problem, options_of(step, solver));
+      mpm->preprocess();
+      state.ResumeTiming();
+      mpm->set_handles(handles.vertices, handles.targets);
+      mpm->preprocess();
+      state.PauseTiming(); // not the destruction
+      mpm.reset();
+      state.ResumeTiming();
+    }
+  } catch(const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  set_counters(state, model, memory);
+}
+
 void BM_first_frame(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
 {
   if(!fixtures_ready(state, model)) return;
@@ -209,6 +242,7 @@ void BM_first_frame(benchmark::State& state, Bench_model model, Global_step step
       state.PauseTiming();
       std::optional<Embedding_solver> mpm;
       mpm.emplace(problem, options_of(step, solver));
+      mpm->preprocess(); // when the model is loaded, before any handle is chosen
       state.ResumeTiming();
       mpm->set_handles(handles.vertices, handles.targets);
       const CGAL::MPM::Solve_report report = mpm->solve();
@@ -251,15 +285,16 @@ const bool registered = [] {
   const std::vector<Bench_model> models = mpm_bench::all_models();
   using Function = void (*)(benchmark::State&, Bench_model, Global_step, Sparse_solver);
   const std::pair<const char*, Function> kinds[] = {{"BM_iteration", BM_iteration}, {"BM_factor", BM_factor},
-                                                    {"BM_frame", BM_frame}, {"BM_first_frame", BM_first_frame}};
+                                                    {"BM_frame", BM_frame}, {"BM_first_frame", BM_first_frame},
+                                                    {"BM_handle_set", BM_handle_set}};
   for(const auto& [kind, function] : kinds)
     for(Bench_model model : models)
       for(const auto& [step_name, step] : global_steps<Global_step>()) {
         // The direct step assembles and factors the whole system every iteration: a
         // reference point on the small hand only (and no frames: they take seconds).
         if(step == Global_step::direct && (model != Bench_model::hand_3k || function == BM_frame)) continue;
-        // The first frame: what users wait for, with the default step only.
-        if(function == BM_first_frame && step != Global_step::reduced) continue;
+        // The first frame and a new handle set: what users wait for, with the default step only.
+        if((function == BM_first_frame || function == BM_handle_set) && step != Global_step::reduced) continue;
         for(const auto& [solver_name, solver] : sparse_solvers()) {
           const std::string name =
               std::string(kind) + "/" + mpm_bench::model_name(model) + "/mpm_" + step_name + "_" + solver_name;
@@ -267,7 +302,7 @@ const bool registered = [] {
                         ->ArgName("handles")->Arg(mpm_bench::bench_handles)->Unit(benchmark::kMillisecond);
           // A frame starts from a converged state, which costs many frames to reach: set it up once.
           if(function == BM_frame) b->Iterations(20);
-          if(function == BM_first_frame) b->Iterations(3); // seconds each on the 66k spider
+          if(function == BM_first_frame || function == BM_handle_set) b->Iterations(3); // seconds each on the 66k spider
         }
       }
   for(Bench_model model : models)

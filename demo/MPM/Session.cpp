@@ -108,6 +108,9 @@ void Solver_thread::run()
           arap.reset();
           built.reset();
           solver = std::make_unique<MPM::Embedding_solver>(*r.problem, r.options);
+          // Factored once without handles: every handle set is then a
+          // low-rank update (the scene's first request has no handles).
+          solver->preprocess();
           built = r.problem;
           built_coupling = r.options.coupling_weight;
           solver_has_handles = false;

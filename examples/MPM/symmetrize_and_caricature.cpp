@@ -16,8 +16,8 @@ namespace MPM = CGAL::MPM;
 
 namespace {
 
-// Solves `problem` (no handles: each piece is anchored weakly to its rest
-// position), reports and writes the result.
+// Solves `problem` (no handles: each piece is anchored at one vertex to its
+// rest position), reports and writes the result.
 void solve_and_write(const std::string& what, const MPM::Embedding_problem& problem, const std::string& path)
 {
   MPM::Embedding_solver solver(problem);

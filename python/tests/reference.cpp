@@ -56,7 +56,9 @@ Json hand(int vertices, unsigned pose_seed)
   const Training_example& example = model.examples[0];
   const Handle_set handles = handles_per_part(Labeled_mesh{example.mesh, example.face_labels, example.name}, 1,
                                               synthetic.draw_pose(pose_seed));
+  // As `cgal_mpm.Editor` does: factored when built, then the handles.
   Embedding_solver solver(make_deformation_problem(model, 0));
+  solver.preprocess();
   solver.set_handles(handles.vertices, handles.targets);
   const Solve_report report = solver.solve();
   return {{"types", types},
@@ -74,6 +76,7 @@ Json drag(int vertices, int drags)
   const Handle_set handles =
     handles_per_part(Labeled_mesh{example.mesh, example.face_labels, example.name}, 1, example.mesh.points);
   Embedding_solver solver(make_deformation_problem(model, 0));
+  solver.preprocess();
   solver.set_handles(handles.vertices, handles.targets);
   solver.preprocess();
   const double diagonal = (example.mesh.points.colwise().maxCoeff() - example.mesh.points.colwise().minCoeff()).norm();

@@ -230,10 +230,12 @@ Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const E
 // nothing else. Anchoring every vertex also pulled the piece's orientation
 // back toward rest, ever more weakly: an edit that turns parts (symmetrize)
 // then crept for a hundred iterations after its shape had settled.
-void Embedding_solver::Impl::compute_anchor()
+void Embedding_solver::Impl::compute_anchor() { anchor = anchor_for(handle_vertices); }
+
+Eigen::VectorXd Embedding_solver::Impl::anchor_for(const std::vector<int>& handles) const
 {
   std::vector<bool> held(n, false);
-  for(int v : handle_vertices) held[component[v]] = true;
+  for(int v : handles) held[component[v]] = true;
   std::map<int, std::pair<Eigen::RowVector3d, int>> centroid; // per free piece: sum of points, count
   for(int v = 0; v < n; ++v)
     if(!held[component[v]])
@@ -252,20 +254,28 @@ void Embedding_solver::Impl::compute_anchor()
     if(!added && (mesh.points.row(v) - c).squaredNorm() < (mesh.points.row(best->second) - c).squaredNorm())
       best->second = v;
   }
-  // The weight of the piece's vertices together, so that the system is as
-  // well conditioned as with every vertex anchored.
-  anchor = Eigen::VectorXd::Zero(n);
-  for(const auto& [piece, v] : nearest)
-    anchor[v] = options.anchor_weight * mean_diagonal * centroid.at(piece).second;
+  // The energy is blind to the piece's translation, which this one vertex
+  // alone fixes, so its weight changes no solution; as stiff as a handle,
+  // the factored block stays as well conditioned when a piece's anchor is
+  // traded for handles by a low-rank update (`update_handle_set()`).
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(n);
+  for(const auto& [piece, v] : nearest) weights[v] = options.anchor_weight * mean_diagonal;
+  return weights;
+}
+
+// What the anchors and handles of a handle set add to the vertex block's diagonal.
+Eigen::VectorXd Embedding_solver::Impl::diagonal_terms(const std::vector<int>& handles) const
+{
+  Eigen::VectorXd d = anchor_for(handles);
+  for(int v : handles) d[v] += options.handle_weight * mean_diagonal;
+  return d;
 }
 
 void Embedding_solver::Impl::factor()
 {
-  const double handle_weight = options.handle_weight * mean_diagonal;
-
+  factored_diagonal = diagonal_terms(handle_vertices);
   system = elastic;
-  for(int v = 0; v < n; ++v) system.coeffRef(v, v) += anchor[v];
-  for(int v : handle_vertices) system.coeffRef(v, v) += handle_weight;
+  for(int v = 0; v < n; ++v) system.coeffRef(v, v) += factored_diagonal[v];
   system.makeCompressed();
   solver = make_vertex_block_solver(options.sparse_solver);
   if(!solver->factor(system))
@@ -283,7 +293,6 @@ void Embedding_solver::Impl::factor()
   factored = true;
   handle_terms_ready = false;
   handle_columns_valid = false;
-  factored_handles = handle_vertices;
   update_vertices.clear();
   update_weights.resize(0);
   update_columns.resize(n, 0);
@@ -366,37 +375,26 @@ Eigen::MatrixXd Embedding_solver::Impl::solve_a11(const Eigen::MatrixXd& rhs) co
   return x;
 }
 
-// Accepts `vertices` as a low-rank change of the factored handle set when the
-// same pieces stay handled and few vertices change; false asks for a refactorization.
+// Accepts `vertices` as a low-rank change of the factored block when few
+// diagonal entries differ from it (handles added, removed or moved, and the
+// anchors of pieces that gained or lost their handles); false asks for a
+// refactorization. A solver factored once, without handles, so serves every
+// later handle set of up to `max_update` vertices.
 bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
 {
-  constexpr std::size_t max_update = 32;
+  constexpr Eigen::Index max_update = 64;
   if(!factored) return false;
-  const auto pieces = [&](const std::vector<int>& h) {
-    std::set<int> p;
-    for(int v : h) p.insert(component[v]);
-    return p;
-  };
-  if(pieces(vertices) != pieces(factored_handles)) return false;
-  const std::set<int> now(vertices.begin(), vertices.end()), before(factored_handles.begin(), factored_handles.end());
-  std::vector<int> changed;
+  const Eigen::VectorXd change = diagonal_terms(vertices) - factored_diagonal;
+  if((change.array() != 0.).count() > max_update) return false;
+  update_vertices.clear();
   std::vector<double> weights;
-  const double w = options.handle_weight * mean_diagonal;
-  for(int v : now)
-    if(!before.count(v))
+  for(int v = 0; v < n; ++v)
+    if(change[v] != 0.)
     {
-      changed.push_back(v);
-      weights.push_back(w);
+      update_vertices.push_back(v);
+      weights.push_back(change[v]);
     }
-  for(int v : before)
-    if(!now.count(v))
-    {
-      changed.push_back(v);
-      weights.push_back(-w);
-    }
-  if(changed.size() > max_update) return false;
-  update_vertices = changed;
-  update_weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), weights.size());
+  update_weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), Eigen::Index(weights.size()));
   apply_update();
   return true;
 }
@@ -452,6 +450,15 @@ void Embedding_solver::Impl::apply_update()
       plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
 }
 
+// A11 x for the updated block: the factored matrix plus the low-rank update.
+Eigen::MatrixXd Embedding_solver::Impl::updated_product(const Eigen::MatrixXd& x) const
+{
+  Eigen::MatrixXd product = system * x;
+  for(std::size_t u = 0; u < update_vertices.size(); ++u)
+    product.row(update_vertices[u]) += update_weights[Eigen::Index(u)] * x.row(update_vertices[u]);
+  return product;
+}
+
 // The anchors' part of b0: each anchored vertex pulled to its rest position.
 Point_matrix Embedding_solver::Impl::anchor_right_hand_side() const
 {
@@ -475,7 +482,12 @@ Eigen::MatrixXd Embedding_solver::Impl::handle_solution()
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, k + 3);
     for(Eigen::Index h = 0; h < k; ++h) rhs(handle_vertices[std::size_t(h)], h) = 1.;
     rhs.rightCols<3>() = anchor_right_hand_side();
-    const Eigen::MatrixXd solved = solve_a11(rhs);
+    Eigen::MatrixXd solved = solve_a11(rhs);
+    // Through a low-rank update the solutions carry a larger rounding, which
+    // the reduced energy (the handle constant minus b0^T z, two sums of the
+    // handles' stiffness times their squared targets) would magnify: one
+    // step of iterative refinement against the updated block.
+    if(!update_vertices.empty()) solved += solve_a11(rhs - updated_product(solved));
     handle_columns = solved.leftCols(k);
     anchor_solution = solved.rightCols<3>();
     handle_columns_for = handle_vertices;

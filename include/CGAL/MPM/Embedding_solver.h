@@ -60,8 +60,13 @@ struct Embedding_options
   Sparse_solver sparse_solver = Sparse_solver::simplicial_ldlt; ///< factorization
   /// Handle stiffness relative to the mean diagonal of the elastic matrix.
   double handle_weight = 100.;
-  /// Anchor stiffness of pieces without handles, relative likewise.
-  double anchor_weight = 1e-6;
+  /// Stiffness of the one vertex (nearest the rest centroid) that anchors
+  /// each connected piece without handles to its rest position, relative
+  /// likewise. The energy is blind to such a piece's translation, so the
+  /// weight changes no solution, only the conditioning; as stiff as a
+  /// handle, a solver factored before any handle is chosen (`preprocess()`)
+  /// takes each later handle set as a low-rank update.
+  double anchor_weight = 100.;
   /// Weight of the coupled-coordinates term `w |lambda_a - lambda_b|^2` over
   /// the problem's coupled cluster pairs, relative to the clusters' mean
   /// prior precision; 0 disables it.
@@ -156,8 +161,11 @@ public:
   /// Movable, not copyable.
   Embedding_solver& operator=(Embedding_solver&&) noexcept;
 
-  /// Sets the handle vertices and their targets (k x 3). A new vertex set
-  /// refactors; the same vertices with new targets do not. Throws
+  /// Sets the handle vertices and their targets (k x 3). The same vertices
+  /// with new targets cost no factorization; a new vertex set changes a few
+  /// diagonal entries of the factored block (its handles, and the anchor of
+  /// a piece that gains or loses its handles), a low-rank update when at
+  /// most 64 entries change, else a refactorization. Throws
   /// `Input_error` for a vertex out of range, a duplicate vertex or a
   /// non-finite target.
   void set_handles(const std::vector<int>& vertices, const Point_matrix& targets);
@@ -166,6 +174,8 @@ public:
   /// Factors the vertex block and precomputes the blocks for the current
   /// handle set now (otherwise the first iteration does it), so that the
   /// cost of a new handle set can be paid, and timed, apart from iterating.
+  /// Called before any handle is set (when a model is loaded), it pays the
+  /// factorization once: later handle sets are low-rank updates.
   void preprocess();
 
   /// Runs local/global iterations (Anderson-accelerated) from the current

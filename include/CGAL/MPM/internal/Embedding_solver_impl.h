@@ -114,11 +114,12 @@ struct Embedding_solver::Impl
   std::vector<int> handle_vertices;
   Point_matrix handle_targets;
   bool factored = false;
-  // A change of handle vertices that keeps the handled pieces is a low-rank
-  // (Woodbury) update of the factored block: A = A_f + U diag(w) U^T with U
-  // the changed vertices, A^-1 = A_f^-1 - C K^-1 C^T, C = A_f^-1 U,
-  // K = diag(1/w) + U^T C.
-  std::vector<int> factored_handles;
+  // A change of handle vertices (and of the anchors it moves: a piece that
+  // gains or loses its handles) changes a few diagonal entries of the
+  // vertex block, a low-rank (Woodbury) update of the factored block:
+  // A = A_f + U diag(w) U^T with U the changed vertices,
+  // A^-1 = A_f^-1 - C K^-1 C^T, C = A_f^-1 U, K = diag(1/w) + U^T C.
+  Eigen::VectorXd factored_diagonal; // anchors and handle weights in A_f
   std::vector<int> update_vertices;
   Eigen::VectorXd update_weights;
   Eigen::MatrixXd update_columns;      // C, n x k
@@ -171,10 +172,13 @@ struct Embedding_solver::Impl
   Impl(const Embedding_problem& problem, const Embedding_options& o);
   void prepare_cluster(const Cluster& c, double sigma_sub, int index);
   void compute_anchor();
+  Eigen::VectorXd anchor_for(const std::vector<int>& handles) const;
+  Eigen::VectorXd diagonal_terms(const std::vector<int>& handles) const;
   void factor();
   bool update_handle_set(const std::vector<int>& vertices);
   void apply_update();
   Eigen::MatrixXd solve_a11(const Eigen::MatrixXd& rhs) const;
+  Eigen::MatrixXd updated_product(const Eigen::MatrixXd& x) const;
   Point_matrix anchor_right_hand_side() const;
   Eigen::MatrixXd handle_solution();
   void prepare_handle_terms();
