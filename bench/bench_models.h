@@ -11,6 +11,7 @@
 #include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/Part_type_proposal.h>
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
@@ -35,8 +36,13 @@ namespace mpm_bench {
 /// small enough for the direct (reference) global step. And real meshes from
 /// CGAL's data (Debian's libcgal-demo: diplodocus 24k, armadillo 26k, refined
 /// elephant 44k vertices), each learned as one part: no shape modes, pure
-/// elastic MPM, the fair speed comparison with ARAP.
-enum class Bench_model { hand_3k, spine_16k, hand_23k, spider_66k, diplodocus, armadillo, refined_elephant };
+/// elastic MPM, the fair speed comparison with ARAP. And segmented scans
+/// from the Princeton Segmentation Benchmark (`../shared/data/psb`): a hand
+/// and an octopus with a person's segmentation, part types proposed,
+/// learned and stitched into one surface, as users bring them.
+enum class Bench_model {
+  hand_3k, spine_16k, hand_23k, spider_66k, diplodocus, armadillo, refined_elephant, psb_hand_181, psb_octopus_124
+};
 
 /// The synthetic models.
 inline std::vector<Bench_model> synthetic_models()
@@ -50,6 +56,12 @@ inline bool is_real_mesh(Bench_model which)
   return which == Bench_model::diplodocus || which == Bench_model::armadillo || which == Bench_model::refined_elephant;
 }
 
+/// Whether the model is a segmented scan read from `psb_directory()`.
+inline bool is_segmented_scan(Bench_model which)
+{
+  return which == Bench_model::psb_hand_181 || which == Bench_model::psb_octopus_124;
+}
+
 /// The model's name in benchmark names (`BM_iteration/hand_23k/...`); for a
 /// real mesh also its file name without `.off`.
 inline const char* model_name(Bench_model which)
@@ -61,6 +73,8 @@ inline const char* model_name(Bench_model which)
   case Bench_model::spider_66k: return "spider_66k";
   case Bench_model::diplodocus: return "diplodocus";
   case Bench_model::armadillo: return "armadillo";
+  case Bench_model::psb_hand_181: return "psb_hand_181";
+  case Bench_model::psb_octopus_124: return "psb_octopus_124";
   default: return "refined_elephant";
   }
 }
@@ -81,6 +95,17 @@ inline std::string data_directory()
 
 inline std::string real_mesh_path(Bench_model which) { return data_directory() + "/" + model_name(which) + ".off"; }
 
+/// Where the segmented scans are: `$MPM_PSB_DIR`, else `../shared/data/psb`
+/// beside the source tree, as CI lays it out.
+inline std::string psb_directory()
+{
+  if(const char* dir = std::getenv("MPM_PSB_DIR"); dir && *dir) return dir;
+  return MPM_BENCH_PSB_DIR;
+}
+
+/// A segmented scan's file without extension (`.../hand_181`).
+inline std::string psb_path(Bench_model which) { return psb_directory() + "/" + (model_name(which) + 4); }
+
 /// The real meshes whose files exist; says once on stderr which are skipped.
 inline std::vector<Bench_model> available_real_meshes()
 {
@@ -97,11 +122,28 @@ inline std::vector<Bench_model> available_real_meshes()
   return available;
 }
 
-/// Synthetic models, then the real meshes that are available.
+/// The segmented scans whose files exist; says once on stderr when they are not.
+inline std::vector<Bench_model> available_segmented_scans()
+{
+  static const std::vector<Bench_model> available = [] {
+    std::vector<Bench_model> found;
+    for(Bench_model m : {Bench_model::psb_hand_181, Bench_model::psb_octopus_124}) {
+      if(std::ifstream(psb_path(m) + ".off").good() && std::ifstream(psb_path(m) + ".seg").good()) found.push_back(m);
+      else
+        std::cerr << "mpm_bench: " << psb_path(m) << ".off/.seg not found, skipping the " << model_name(m)
+                  << " benchmarks (set MPM_PSB_DIR)\n";
+    }
+    return found;
+  }();
+  return available;
+}
+
+/// Synthetic models, then the real meshes and segmented scans that are available.
 inline std::vector<Bench_model> all_models()
 {
   std::vector<Bench_model> models = synthetic_models();
   for(Bench_model m : available_real_meshes()) models.push_back(m);
+  for(Bench_model m : available_segmented_scans()) models.push_back(m);
   return models;
 }
 
@@ -142,11 +184,21 @@ inline const CGAL::MPM::Synthetic_model& synthetic_model(Bench_model which)
   return found->second;
 }
 
-/// The labelled mesh of a model: the synthetic model's, or a real mesh read
-/// from `real_mesh_path()` with every face labelled 0 (one part). Throws
-/// `Input_error` when the file cannot be read.
-inline const CGAL::MPM::Labeled_mesh& bench_mesh(Bench_model which)
+inline const CGAL::MPM::Morphable_part_model& learned_model(Bench_model which);
+
+/// The labelled mesh a model is learned from: the synthetic model's, a real
+/// mesh read from `real_mesh_path()` with every face labelled 0 (one part),
+/// or a segmented scan with its segmentation. Throws `Input_error` when a
+/// file cannot be read.
+inline const CGAL::MPM::Labeled_mesh& training_mesh(Bench_model which)
 {
+  if(is_segmented_scan(which)) {
+    static std::map<Bench_model, CGAL::MPM::Labeled_mesh> scans;
+    auto found = scans.find(which);
+    if(found == scans.end())
+      found = scans.emplace(which, CGAL::MPM::read_labeled_mesh(psb_path(which) + ".off", psb_path(which) + ".seg")).first;
+    return found->second;
+  }
   if(!is_real_mesh(which)) return synthetic_model(which).mesh;
   static std::map<Bench_model, CGAL::MPM::Labeled_mesh> cache;
   auto found = cache.find(which);
@@ -160,10 +212,33 @@ inline const CGAL::MPM::Labeled_mesh& bench_mesh(Bench_model which)
   return found->second;
 }
 
-/// Annotation of a model: the synthetic model's, or none (one part, default parameters).
+/// The mesh the edits work on: the training mesh, except for a segmented
+/// scan, whose learned example is its stitched surface (the corresponded
+/// parts rebuilt with their types' connectivity).
+inline const CGAL::MPM::Labeled_mesh& bench_mesh(Bench_model which)
+{
+  if(!is_segmented_scan(which)) return training_mesh(which);
+  static std::map<Bench_model, CGAL::MPM::Labeled_mesh> cache;
+  auto found = cache.find(which);
+  if(found == cache.end()) {
+    const CGAL::MPM::Training_example& example = learned_model(which).examples.front();
+    found = cache.emplace(which, CGAL::MPM::Labeled_mesh{example.mesh, example.face_labels, example.name}).first;
+  }
+  return found->second;
+}
+
+/// Annotation of a model: the synthetic model's, the proposed part types of
+/// a segmented scan, or none (one part, default parameters).
 inline const CGAL::MPM::Annotation& bench_annotation(Bench_model which)
 {
   static const CGAL::MPM::Annotation none;
+  if(is_segmented_scan(which)) {
+    static std::map<Bench_model, CGAL::MPM::Annotation> proposed;
+    auto found = proposed.find(which);
+    if(found == proposed.end())
+      found = proposed.emplace(which, CGAL::MPM::propose_part_types(training_mesh(which)).annotation).first;
+    return found->second;
+  }
   return is_real_mesh(which) ? none : synthetic_model(which).annotation;
 }
 
@@ -193,7 +268,7 @@ inline const CGAL::MPM::Point_matrix& held_out_pose(Bench_model which)
   static std::map<Bench_model, CGAL::MPM::Point_matrix> cache;
   auto found = cache.find(which);
   if(found == cache.end())
-    found = cache.emplace(which, is_real_mesh(which) ? bent_pose(bench_mesh(which).mesh.points)
+    found = cache.emplace(which, is_real_mesh(which) || is_segmented_scan(which) ? bent_pose(bench_mesh(which).mesh.points)
                                                      : synthetic_model(which).draw_pose(bench_pose_seed)).first;
   return found->second;
 }
@@ -216,7 +291,7 @@ inline const CGAL::MPM::Morphable_part_model& learned_model(Bench_model which)
   static std::map<Bench_model, CGAL::MPM::Morphable_part_model> cache;
   auto found = cache.find(which);
   if(found == cache.end())
-    found = cache.emplace(which, CGAL::MPM::learn_morphable_part_model(bench_mesh(which), bench_annotation(which))).first;
+    found = cache.emplace(which, CGAL::MPM::learn_morphable_part_model(training_mesh(which), bench_annotation(which))).first;
   return found->second;
 }
 

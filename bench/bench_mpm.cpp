@@ -268,7 +268,7 @@ void BM_learn(benchmark::State& state, Bench_model model)
     return;
   }
   // The problem is built for the counters, outside the memory probe.
-  const CGAL::MPM::Labeled_mesh& mesh = mpm_bench::bench_mesh(model);
+  const CGAL::MPM::Labeled_mesh& mesh = mpm_bench::training_mesh(model);
   const CGAL::MPM::Annotation& annotation = mpm_bench::bench_annotation(model);
   const mpm_bench::Memory_probe memory;
   for(auto _ : state) {
