@@ -138,21 +138,23 @@ void bind_assembly(py::module_& m)
 {
   bind_part_graph(m);
 
-  m.def("assemble", [](const Morphable_part_model& model, const Part_graph& graph, bool solve, int max_iterations) {
-    const Assembly_options options = assembly_options(solve, max_iterations);
-    Assembly a;
-    {
-      py::gil_scoped_release release;
-      a = assemble(model, graph, options);
-    }
-    return assembly_dict(std::move(a)); },
+  m.def("assemble", [](const Morphable_part_model& model, const Part_graph& graph, bool solve, int max_iterations,
+                       const py::object& callback) {
+    Python_callbacks callbacks;
+    Assembly_options options = assembly_options(solve, max_iterations);
+    options.solver.iteration_callback = callbacks.wrap<int, double>(callback);
+    options.solver.cancel = callbacks.flag();
+    return assembly_dict(callbacks.run([&] { return assemble(model, graph, options); })); },
         py::arg("model"), py::arg("graph"), py::arg("solve") = true, py::arg("max_iterations") = 100,
+        py::arg("callback") = py::none(),
         R"doc(Assembles a part graph and embeds it seamlessly.
 
 Returns {"V", "F", "initial_V" (the rigid placement), "face_nodes",
 "face_types", "residual_energy", "energy_per_part", "part_energies",
 "docking_energies", "iterations", "converged", "energies", "setup_ms",
-"solve_ms"}. solve=False stops after the rigid placement.)doc");
+"solve_ms"}. solve=False stops after the rigid placement. callback(iteration,
+energy) is called after each iteration of the solver; raising in it stops
+the assembly and re-raises. Releases the GIL.)doc");
 
   m.def("spawn", [](const Morphable_part_model& model, const Part_graph& start, int count, unsigned seed,
                     const py::object& progress) {

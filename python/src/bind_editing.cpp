@@ -250,11 +250,11 @@ private:
 // One edit from start to end, as the `mpm` editing commands do it.
 py::tuple edit_once(const Morphable_part_model& model, int example, const std::string& edit, const py::handle& factor,
                     double relative_sigma, const py::handle& vertices, const py::handle& targets, bool unfold,
-                    const py::kwargs& kwargs)
+                    const py::object& callback, const py::kwargs& kwargs)
 {
   Editor editor(model, example, edit, factor, relative_sigma, kwargs);
   if(!vertices.is_none()) editor.set_handles(vertices, targets);
-  py::dict report = editor.solve(py::none());
+  py::dict report = editor.solve(callback);
   report["setup_ms"] = editor.setup_ms();
   return py::make_tuple(unfold ? editor.unfolded_positions() : editor.positions(), report);
 }
@@ -327,23 +327,28 @@ void bind_editing(py::module_& m)
   bind_editor(m);
 
   m.def("deform", [](const Morphable_part_model& model, const py::handle& vertices, const py::handle& targets,
-                     int example, bool unfold, const py::kwargs& kwargs) {
-    return edit_once(model, example, "deform", py::none(), 0.01, vertices, targets, unfold, kwargs); },
+                     int example, bool unfold, const py::object& callback, const py::kwargs& kwargs) {
+    return edit_once(model, example, "deform", py::none(), 0.01, vertices, targets, unfold, callback, kwargs); },
         py::arg("model"), py::arg("vertices"), py::arg("targets"), py::arg("example") = 0, py::arg("unfold") = true,
+        py::arg("callback") = py::none(),
         "Deforms training example `example` so that handle vertices reach their targets (k x 3). Returns "
-        "(V, report). unfold: take out folds as `mpm deform` does. **options: solver options (see Editor).");
+        "(V, report). unfold: take out folds as `mpm deform` does. callback(iteration, energy): as for "
+        "Editor.solve(). **options: solver options (see Editor).");
   m.def("symmetrize", [](const Morphable_part_model& model, int example, double relative_sigma,
-                         const py::handle& vertices, const py::handle& targets, bool unfold, const py::kwargs& kwargs) {
-    return edit_once(model, example, "symmetrize", py::none(), relative_sigma, vertices, targets, unfold, kwargs); },
+                         const py::handle& vertices, const py::handle& targets, bool unfold, const py::object& callback,
+                         const py::kwargs& kwargs) {
+    return edit_once(model, example, "symmetrize", py::none(), relative_sigma, vertices, targets, unfold, callback,
+                     kwargs); },
         py::arg("model"), py::arg("example") = 0, py::arg("relative_sigma") = 0.01, py::arg("vertices") = py::none(),
-        py::arg("targets") = py::none(), py::arg("unfold") = true,
+        py::arg("targets") = py::none(), py::arg("unfold") = true, py::arg("callback") = py::none(),
         "Symmetrizes training example `example`: instances of each type pulled to one shape. Optional handles. "
         "Returns (V, report).");
   m.def("caricature", [](const Morphable_part_model& model, double factor, int example, const py::handle& vertices,
-                         const py::handle& targets, bool unfold, const py::kwargs& kwargs) {
-    return edit_once(model, example, "caricature", py::float_(factor), 0.01, vertices, targets, unfold, kwargs); },
+                         const py::handle& targets, bool unfold, const py::object& callback, const py::kwargs& kwargs) {
+    return edit_once(model, example, "caricature", py::float_(factor), 0.01, vertices, targets, unfold, callback,
+                     kwargs); },
         py::arg("model"), py::arg("factor"), py::arg("example") = 0, py::arg("vertices") = py::none(),
-        py::arg("targets") = py::none(), py::arg("unfold") = true,
+        py::arg("targets") = py::none(), py::arg("unfold") = true, py::arg("callback") = py::none(),
         "Caricature (factor > 1) or anti-shape (factor < 0) of training example `example`. Returns (V, report).");
 
   m.def("handles_per_part", [](const Morphable_part_model& model, int per_part, int example, const py::handle& targets) {

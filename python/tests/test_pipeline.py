@@ -57,8 +57,10 @@ def test_assembly_grows_a_finger_seamlessly(hand_model):
                 and graph.node_types(model)[e["second"]]["type"] == "middle")
     node = mpm.insert_segment(model, graph, edge)
     assert node == 16 and len(graph.nodes) == 17
-    result = mpm.assemble(model, graph)
+    seen = []
+    result = mpm.assemble(model, graph, callback=lambda i, e: seen.append(i))
     assert result["converged"] and result["V"].shape[0] > model.examples[0]["V"].shape[0]
+    assert seen == list(range(1, result["iterations"] + 1))
     check = mpm.check_surface(result["V"], result["F"])
     assert check["components"] == 1 and check["border_edges"] == 0
     spawned = mpm.spawn(model, mpm.part_graph(model), count=3, seed=4)
