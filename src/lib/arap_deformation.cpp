@@ -4,6 +4,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/Surface_mesh_deformation.h>
 
@@ -86,8 +87,7 @@ public:
         face_component.empty() ? 0 : *std::max_element(face_component.begin(), face_component.end()) + 1;
     for(vertex_descriptor v : mesh_.vertices())
       if(component_[v] >= 0) surface_vertices_.push_back(v);
-    if(n > 0)
-      diagonal_ = (input.points.colwise().maxCoeff() - input.points.colwise().minCoeff()).norm();
+    diagonal_ = internal::bounding_box_diagonal(input.points);
 
     deformation_ = make_deformation(mesh_, variant);
   }

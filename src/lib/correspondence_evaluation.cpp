@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Correspondence_evaluation.h>
 #include <CGAL/MPM/Face_graph_conversion.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -79,7 +80,7 @@ std::vector<double> correspondence_errors(const Indexed_mesh& truth_template, co
                                           const Indexed_mesh& truth_instance, const Point_matrix& mapped)
 {
   const Point_matrix truth = true_corresponding_points(truth_template, template_points, truth_instance);
-  const double diameter = (truth_instance.points.colwise().maxCoeff() - truth_instance.points.colwise().minCoeff()).norm();
+  const double diameter = internal::bounding_box_diagonal(truth_instance.points);
   std::vector<double> errors;
   for(Eigen::Index v = 0; v < mapped.rows(); ++v) errors.push_back((mapped.row(v) - truth.row(v)).norm() / diameter);
   return errors;

@@ -111,7 +111,7 @@ Point_matrix spline_icp(const Surface& s, const Template_info& info, const Landm
 {
   const Point_matrix fixed_centres = lm.motion.apply(lm.source);
   const Point_matrix fixed_displacements = lm.target - fixed_centres;
-  const double scale = diagonal_of(base);
+  const double scale = bounding_box_diagonal(base);
   const int n = static_cast<int>(base.rows());
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
   std::vector<int> region(n, -1);

@@ -101,7 +101,7 @@ Surface::Surface(const Indexed_mesh& m, const std::string& type_name, const std:
     border[l].tree = std::make_unique<Segment_tree>(border[l].segments.begin(), border[l].segments.end());
     border[l].tree->accelerate_distance_queries();
   }
-  diagonal = diagonal_of(m.points);
+  diagonal = bounding_box_diagonal(m.points);
   double area = 0.;
   area_centroid.setZero();
   for(const Triangle& t : m.triangles)

@@ -5,6 +5,7 @@
 #include <CGAL/MPM/internal/Atomic_file.h>
 #include <CGAL/MPM/internal/Mesh_encoding.h>
 #include <CGAL/MPM/internal/Mesh_file_checks.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
@@ -93,9 +94,7 @@ void check_mesh_geometry(const Indexed_mesh& mesh, const std::string& source,
                                                   "would overflow)");
     }
   }
-  // The bounding-box diagonal, without underflow for tiny coordinates.
-  const double diagonal =
-    n == 0 ? 0. : (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).stableNorm();
+  const double diagonal = internal::bounding_box_diagonal(mesh.points);
   // Twice the area of a triangle counted as flat: 1e-14 of the squared
   // bounding-box diagonal, far below any modelled feature yet above rounding.
   // Edges are measured in diagonals, so that the test holds at any scale

@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Surface_soundness.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <Eigen/Geometry>
 
@@ -161,7 +162,7 @@ std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surf
 double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
 {
   const Mesh ma = surface_mesh_of(a), mb = surface_mesh_of(b);
-  const double diagonal = (b.points.colwise().maxCoeff() - b.points.colwise().minCoeff()).norm();
+  const double diagonal = internal::bounding_box_diagonal(b.points);
   const double d = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
     ma, mb, CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)),
     CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)));

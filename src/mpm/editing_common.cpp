@@ -11,6 +11,7 @@
 #include <CGAL/MPM/Part_colors.h>
 #include <CGAL/MPM/internal/Mesh_file_checks.h>
 #include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>
 #include <chrono>
@@ -57,7 +58,7 @@ const Option_spec& find_spec(const std::vector<Option_spec>& options, const std:
 // diagonal of `before`, so that values compare across models.
 double relative_rms_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::Point_matrix& after)
 {
-  const double diagonal = (before.colwise().maxCoeff() - before.colwise().minCoeff()).norm();
+  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(before);
   const double rms = std::sqrt((after - before).rowwise().squaredNorm().mean());
   return diagonal > 0 ? rms / diagonal : rms;
 }
@@ -67,13 +68,11 @@ double relative_rms_displacement(const CGAL::MPM::Point_matrix& before, const CG
 // 1e308 overflowed the solve, and neither error named the handle.
 constexpr double farthest_sensible_move = 100.;
 
-double diagonal_of(const CGAL::MPM::Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
-
 // Refused before the solve, naming the handle.
 void check_handle_targets(const CGAL::MPM::Point_matrix& rest, const CGAL::MPM::Handle_set& handles,
                           const std::string& handles_file)
 {
-  const double diagonal = diagonal_of(rest);
+  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(rest);
   for(int k = 0; k < handles.size(); ++k)
   {
     const double asked = (handles.targets.row(k) - rest.row(handles.vertices[k])).stableNorm() / diagonal;
@@ -89,7 +88,7 @@ void check_handle_targets(const CGAL::MPM::Point_matrix& rest, const CGAL::MPM::
 void check_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::Point_matrix& after,
                         const std::string& model_path)
 {
-  const double diagonal = diagonal_of(before);
+  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(before);
   const double moved = (after - before).rowwise().norm().maxCoeff() / diagonal;
   if(diagonal > 0. && moved > farthest_sensible_move)
     throw CGAL::MPM::Computation_error("the edit of " + model_path + " moves vertices by up to " + format_number(moved) +
