@@ -4,6 +4,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Vertex_components.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/Surface_mesh_deformation.h>
@@ -78,13 +79,7 @@ public:
   Implementation(const Indexed_mesh& input, Arap_variant variant)
     : mesh_(internal::to_surface_mesh(input, "ARAP mesh", "ARAP"))
   {
-    const int n = input.number_of_vertices();
-    component_.assign(std::size_t(n), -1);
-    const std::vector<int> face_component = connected_component_labels(input);
-    for(std::size_t f = 0; f < face_component.size(); ++f)
-      for(int v : input.triangles[f]) component_[std::size_t(v)] = face_component[f];
-    number_of_components_ =
-        face_component.empty() ? 0 : *std::max_element(face_component.begin(), face_component.end()) + 1;
+    component_ = internal::vertex_component_labels(input, &number_of_components_);
     for(vertex_descriptor v : mesh_.vertices())
       if(component_[v] >= 0) surface_vertices_.push_back(v);
     diagonal_ = internal::bounding_box_diagonal(input.points);

@@ -5,6 +5,7 @@
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Vertex_components.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -86,10 +87,7 @@ public:
     weight_ = edge_weights(mesh_, m_, options.feature_weight);
     for(edge_descriptor e : mesh_.edges())
       edges_.push_back({int(mesh_.vertex(e, 0)), int(mesh_.vertex(e, 1)), false});
-    component_.assign(std::size_t(m_.number_of_vertices()), -1);
-    const std::vector<int> face_component = connected_component_labels(m_);
-    for(std::size_t f = 0; f < face_component.size(); ++f)
-      for(int v : m_.triangles[f]) component_[std::size_t(v)] = face_component[f];
+    component_ = internal::vertex_component_labels(m_);
   }
 
   std::vector<int> trace(std::size_t i, bool closed) const
