@@ -14,6 +14,7 @@
 #include <CGAL/MPM/Part_type_proposal.h>
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <cstdlib>
 #include <exception>
@@ -158,7 +159,7 @@ constexpr int bench_handles = 16;
 /// times `frame_direction()`.
 inline Eigen::RowVector3d frame_drag(const CGAL::MPM::Point_matrix& rest)
 {
-  const double diagonal = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
+  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(rest);
   return 0.01 * diagonal * Eigen::RowVector3d(1., 1., 1.).normalized();
 }
 

@@ -17,6 +17,7 @@
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>
 #include <chrono>
@@ -76,7 +77,7 @@ int main(int argc, char** argv)
     Embedding_solver solver(problem, eo);
     const Point_matrix& rest = problem.mesh.points;
     const int n = int(rest.rows());
-    const double diagonal = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
+    const double diagonal = internal::bounding_box_diagonal(rest);
     const double max_offset = std::stod(options.text("offset")) * diagonal;
     const auto t1 = Clock::now();
     const long rss_start = vm_rss_kb();

@@ -21,6 +21,7 @@
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
 #include "quality_common.h"
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -102,7 +103,7 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   }
   // Whether the solve has settled: the tolerance is relative to the energy,
   // which says little when the energy is small or large.
-  const double diagonal = (after.points.colwise().maxCoeff() - after.points.colwise().minCoeff()).norm();
+  const double diagonal = internal::bounding_box_diagonal(after.points);
   const Point_matrix solved = solver.positions();
   for(int k = 0; k < 10; ++k) solver.iterate();
   r.drift = (solver.positions() - solved).rowwise().norm().maxCoeff() / diagonal;
@@ -122,7 +123,7 @@ std::vector<int> set_tip_handles(const Morphable_part_model& model, const Embedd
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
     if(ex.graph.nodes[i].vertices.size() > ex.graph.nodes[root].vertices.size()) root = int(i);
   const Point_matrix& p = problem.mesh.points;
-  const double diagonal = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+  const double diagonal = internal::bounding_box_diagonal(p);
   const Eigen::RowVector3d centre = rows(p, ex.graph.nodes[root].vertices, ex.graph.nodes[root].vertices.size()).colwise().mean();
   std::vector<int> vertices;
   std::vector<Eigen::RowVector3d> targets;

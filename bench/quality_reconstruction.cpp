@@ -18,6 +18,7 @@
 #include <CGAL/MPM/Laplacian_editing.h>
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <chrono>
 #include <cmath>
@@ -33,8 +34,6 @@ const char* const usage =
   "          --arap-iterations 1000. Pose seeds are 101 .. 100+P.\n";
 
 using namespace CGAL::MPM;
-
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 
 } // namespace
 
@@ -77,7 +76,7 @@ int main(int argc, char** argv)
     {
       const unsigned seed = 101u + unsigned(p);
       const Point_matrix pose = truth.draw_pose(seed);
-      const double d = diagonal(pose);
+      const double d = internal::bounding_box_diagonal(pose);
       const Point_matrix pose_details = laplacian * pose;
       const double detail_scale = std::sqrt(pose_details.rowwise().squaredNorm().mean());
 

@@ -20,6 +20,7 @@
 #include <CGAL/MPM/Shape_space.h>
 #include <CGAL/MPM/Synthetic_model.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <cmath>
 #include <iostream>
@@ -33,8 +34,6 @@ const char* const usage =
   "Defaults: --vertices 3000 --samples 200 --seed 1 --families all (--poses, --counts: ignored)\n";
 
 using namespace CGAL::MPM;
-
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 
 double rms(const Point_matrix& a, const Point_matrix& b)
 {
@@ -104,7 +103,7 @@ int main(int argc, char** argv)
       for(const Synthetic_type& st : truth.types)
         if(st.name == type.name) true_modes = st.modes;
       const Shape_space space = full_space(instances);
-      const double scale = diagonal(space.mean);
+      const double scale = internal::bounding_box_diagonal(space.mean);
       auto row = [&](const char* measure, int modes, double value) {
         out << name << ',' << type.name << ',' << m << ',' << type.number_of_vertices << ',' << true_modes << ','
             << measure << ',' << modes << ',' << mpm_quality::number(value) << '\n';

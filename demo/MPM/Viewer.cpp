@@ -3,6 +3,7 @@
 #include "Viewer.h"
 
 #include <CGAL/MPM/Part_colors.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -166,7 +167,7 @@ Vec Viewer::split_offset() const
   if(!session_.arap()) return Vec(0, 0, 0);
   const Point_matrix& p = session_.rest().points;
   if(p.rows() == 0) return Vec(0, 0, 0);
-  const double diameter = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+  const double diameter = CGAL::MPM::internal::bounding_box_diagonal(p);
   return camera()->rightVector() * (0.55 * diameter);
 }
 

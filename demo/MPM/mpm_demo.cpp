@@ -5,6 +5,7 @@
 // mode (`mpm_demo --batch SCRIPT`) that runs the same edits from a script
 // and writes screenshots, for tests and the manual's figures.
 #include "Main_window.h"
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/Qt/init_ogl_context.h>
 
@@ -274,7 +275,7 @@ private:
     {
       arity(w, 4, 4, "drag HANDLE DX DY DZ");
       const Point_matrix& p = session_.rest().points;
-      const double diagonal = p.rows() ? (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm() : 0.;
+      const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(p);
       session_.drag_handle(integer(w[1]), diagonal * Eigen::RowVector3d(number(w[2]), number(w[3]), number(w[4])));
       report();
     }

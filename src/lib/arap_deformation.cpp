@@ -3,9 +3,10 @@
 #include <CGAL/MPM/Arap_deformation.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Vertex_components.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
 #include <algorithm>
@@ -17,8 +18,8 @@ namespace MPM {
 
 namespace {
 
+using Mesh = internal::Indexed_surface_mesh;
 using Kernel = CGAL::Simple_cartesian<double>;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using vertex_descriptor = Mesh::Vertex_index;
 
 // The variants are distinct class templates; this interface lets one
@@ -70,40 +71,18 @@ std::unique_ptr<Deformation_interface> make_deformation(Mesh& mesh, Arap_variant
   return std::make_unique<Deformation<CGAL::ORIGINAL_ARAP>>(mesh);
 }
 
-const char* const mesh_source = "ARAP mesh";
-
 } // namespace
 
 class Arap_deformation::Implementation
 {
 public:
   Implementation(const Indexed_mesh& input, Arap_variant variant)
+    : mesh_(internal::to_surface_mesh(input, "ARAP mesh", "ARAP"))
   {
-    const int n = input.number_of_vertices();
-    for(int v = 0; v < n; ++v)
-      mesh_.add_vertex(Kernel::Point_3(input.points(v, 0), input.points(v, 1), input.points(v, 2)));
-    for(int f = 0; f < input.number_of_faces(); ++f) {
-      const Triangle& t = input.triangles[std::size_t(f)];
-      const std::string element = "face " + std::to_string(f);
-      for(int corner : t)
-        if(corner < 0 || corner >= n)
-          throw Input_error(mesh_source, element, "vertex " + std::to_string(corner) + " is out of range (the mesh has " +
-                                                    std::to_string(n) + " vertices)");
-      if(mesh_.add_face(vertex_descriptor(t[0]), vertex_descriptor(t[1]), vertex_descriptor(t[2])) == Mesh::null_face())
-        throw Input_error(mesh_source, element, "cannot be added to a Surface_mesh: non-manifold edge or vertex, "
-                                                "orientation inconsistent with its neighbours, or a repeated corner");
-    }
-
-    component_.assign(std::size_t(n), -1);
-    const std::vector<int> face_component = connected_component_labels(input);
-    for(std::size_t f = 0; f < face_component.size(); ++f)
-      for(int v : input.triangles[f]) component_[std::size_t(v)] = face_component[f];
-    number_of_components_ =
-        face_component.empty() ? 0 : *std::max_element(face_component.begin(), face_component.end()) + 1;
+    component_ = internal::vertex_component_labels(input, &number_of_components_);
     for(vertex_descriptor v : mesh_.vertices())
       if(component_[v] >= 0) surface_vertices_.push_back(v);
-    if(n > 0)
-      diagonal_ = (input.points.colwise().maxCoeff() - input.points.colwise().minCoeff()).norm();
+    diagonal_ = internal::bounding_box_diagonal(input.points);
 
     deformation_ = make_deformation(mesh_, variant);
   }

@@ -37,14 +37,6 @@ Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a after b
   return r;
 }
 
-Rigid_motion inverse(const Rigid_motion& m)
-{
-  Rigid_motion r;
-  r.rotation = m.rotation.transpose();
-  r.translation = -(r.rotation * m.translation);
-  return r;
-}
-
 // The points of a rule's pair geometry that belong to side `side`, as
 // (pair point, local vertex of that side's part); seam points count for both.
 std::vector<std::pair<int, int>> side_points(const Docking_rule& rule, int side)
@@ -191,7 +183,7 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
   if(!options.placements.empty())
     for(int i = 0; i < n; ++i)
     {
-      motion[i] = compose(options.placements[i], inverse(given_frame[i]));
+      motion[i] = compose(options.placements[i], given_frame[i].inverse());
       placed[i] = true;
     }
   else

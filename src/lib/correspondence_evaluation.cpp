@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Correspondence_evaluation.h>
 #include <CGAL/MPM/Face_graph_conversion.h>
-#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -10,7 +11,6 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,19 +25,8 @@ namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point_3 = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point_3>;
+using Mesh = internal::Indexed_surface_mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-Mesh to_surface_mesh(const Indexed_mesh& m)
-{
-  Mesh sm;
-  std::vector<Mesh::Vertex_index> v;
-  for(int i = 0; i < m.number_of_vertices(); ++i) v.push_back(sm.add_vertex(Point_3(m.points(i, 0), m.points(i, 1), m.points(i, 2))));
-  for(const Triangle& t : m.triangles)
-    if(sm.add_face(v[t[0]], v[t[1]], v[t[2]]) == Mesh::null_face())
-      throw Input_error("remeshing", "", "the mesh is not an oriented 2-manifold");
-  return sm;
-}
 
 double quantile(std::vector<double> values, double q)
 {
@@ -59,7 +48,7 @@ double mean_edge_length(const Indexed_mesh& m)
 
 Indexed_mesh remesh_isotropically(const Indexed_mesh& mesh, double target_edge_length, int iterations)
 {
-  Mesh sm = to_surface_mesh(mesh);
+  Mesh sm = internal::to_surface_mesh(mesh, "remeshing", "remeshing");
   PMP::isotropic_remeshing(faces(sm), target_edge_length, sm, CGAL::parameters::number_of_iterations(iterations));
   sm.collect_garbage();
   return to_indexed_mesh(sm);
@@ -70,7 +59,7 @@ Point_matrix true_corresponding_points(const Indexed_mesh& truth_template, const
 {
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-  const Mesh sm = to_surface_mesh(truth_template);
+  const Mesh sm = internal::to_surface_mesh(truth_template, "true correspondence", "locating points");
   Tree tree;
   PMP::build_AABB_tree(sm, tree);
   Point_matrix truth(template_points.rows(), 3);
@@ -91,7 +80,7 @@ std::vector<double> correspondence_errors(const Indexed_mesh& truth_template, co
                                           const Indexed_mesh& truth_instance, const Point_matrix& mapped)
 {
   const Point_matrix truth = true_corresponding_points(truth_template, template_points, truth_instance);
-  const double diameter = (truth_instance.points.colwise().maxCoeff() - truth_instance.points.colwise().minCoeff()).norm();
+  const double diameter = internal::bounding_box_diagonal(truth_instance.points);
   std::vector<double> errors;
   for(Eigen::Index v = 0; v < mapped.rows(); ++v) errors.push_back((mapped.row(v) - truth.row(v)).norm() / diameter);
   return errors;

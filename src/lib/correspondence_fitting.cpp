@@ -3,6 +3,7 @@
 #include <CGAL/MPM/internal/Correspondence_surface.h>
 #include <CGAL/MPM/Laplacian_editing.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
+#include <CGAL/MPM/internal/Farthest_point_sampling.h>
 
 #include <Eigen/SparseCholesky>
 
@@ -111,32 +112,18 @@ Point_matrix spline_icp(const Surface& s, const Template_info& info, const Landm
 {
   const Point_matrix fixed_centres = lm.motion.apply(lm.source);
   const Point_matrix fixed_displacements = lm.target - fixed_centres;
-  const double scale = diagonal_of(base);
+  const double scale = bounding_box_diagonal(base);
   const int n = static_cast<int>(base.rows());
-  std::vector<double> distance(n, std::numeric_limits<double>::infinity());
-  std::vector<int> region(n, -1);
+  Eigen::VectorXd squared_distance = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
   for(int v = 0; v < n; ++v)
     for(Eigen::Index k = 0; k < fixed_centres.rows(); ++k)
-      distance[v] = std::min(distance[v], (base.row(v) - fixed_centres.row(k)).norm());
-  std::vector<int> free;
-  while(static_cast<int>(free.size()) < std::min(options.spline_centres, n))
-  {
-    int far = -1;
-    for(int v = 0; v < n; ++v)
-      if(info.loop[v] < 0 && (far < 0 || distance[v] > distance[far])) far = v;
-    if(far < 0 || !(distance[far] > 1e-3 * scale)) break;
-    const int index = static_cast<int>(free.size());
-    free.push_back(far);
-    for(int v = 0; v < n; ++v)
-    {
-      const double d = (base.row(v) - base.row(far)).norm();
-      if(d < distance[v])
-      {
-        distance[v] = d;
-        region[v] = index;
-      }
-    }
-  }
+      squared_distance[v] = std::min(squared_distance[v], (base.row(v) - fixed_centres.row(k)).squaredNorm());
+  // Free centres off the seams, each with the region of vertices nearest to it.
+  std::vector<int> region(n, -1);
+  const double min_distance = 1e-3 * scale;
+  const std::vector<int> free = internal::farthest_point_sampling(
+    base, std::min(options.spline_centres, n), -1, squared_distance, [&](int v) { return info.loop[v] < 0; },
+    min_distance * min_distance, &region);
   const Point_matrix free_centres = rows_of(base, free);
   const Point_matrix centres = stack({fixed_centres, free_centres});
   Point_matrix free_displacements =

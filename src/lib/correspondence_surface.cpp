@@ -3,6 +3,7 @@
 #include <CGAL/MPM/internal/Correspondence_surface.h>
 
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Vertex_normals.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -74,7 +75,6 @@ Surface::Surface(const Indexed_mesh& m, const std::string& type_name, const std:
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(centred.transpose() * centred);
   if(!(pca.eigenvalues()(1) > 1e-12 * pca.eigenvalues()(2)))
     throw Input_error(name, element, "degenerate segment: its points are collinear");
-  vertex_normals.assign(std::size_t(m.number_of_vertices()), Vec3::Zero());
   for(const Triangle& t : m.triangles)
   {
     for(int k = 0; k < 3; ++k)
@@ -83,10 +83,9 @@ Surface::Surface(const Indexed_mesh& m, const std::string& type_name, const std:
     triangles.emplace_back(to_point(m.points.row(t[0])), to_point(m.points.row(t[1])), to_point(m.points.row(t[2])));
     const Vec3 n = (m.points.row(t[1]) - m.points.row(t[0])).transpose().cross((m.points.row(t[2]) - m.points.row(t[0])).transpose());
     normals.push_back(n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero());
-    for(int k = 0; k < 3; ++k) vertex_normals[t[k]] += n; // area-weighted
   }
-  for(Vec3& n : vertex_normals)
-    if(n.norm() > 0) n.normalize();
+  const Point_matrix unit_normals = area_weighted_vertex_normals(m.points, m.triangles);
+  for(Eigen::Index v = 0; v < unit_normals.rows(); ++v) vertex_normals.push_back(unit_normals.row(v).transpose());
   tree.insert(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
   for(std::vector<int>& vertices : loops_of(m)) loops.push_back(make_loop(m.points, std::move(vertices)));
@@ -101,7 +100,7 @@ Surface::Surface(const Indexed_mesh& m, const std::string& type_name, const std:
     border[l].tree = std::make_unique<Segment_tree>(border[l].segments.begin(), border[l].segments.end());
     border[l].tree->accelerate_distance_queries();
   }
-  diagonal = diagonal_of(m.points);
+  diagonal = bounding_box_diagonal(m.points);
   double area = 0.;
   area_centroid.setZero();
   for(const Triangle& t : m.triangles)

@@ -7,6 +7,7 @@
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Shape_space_fit.h>
 #include <CGAL/MPM/Thin_plate_spline.h>
+#include <CGAL/MPM/internal/Vertex_components.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,12 +52,8 @@ public:
     : arap_(mesh, variant), variant_(variant), options_(options), rest_(mesh.points)
   {
     // One pin per connected component, for components the handles miss.
-    const std::vector<int> face_component = connected_component_labels(mesh);
-    component_.assign(std::size_t(mesh.number_of_vertices()), -1);
-    for(std::size_t f = 0; f < face_component.size(); ++f)
-      for(int v : mesh.triangles[f]) component_[std::size_t(v)] = face_component[f];
-    const int components =
-      face_component.empty() ? 0 : *std::max_element(face_component.begin(), face_component.end()) + 1;
+    int components = 0;
+    component_ = internal::vertex_component_labels(mesh, &components);
     std::vector<Eigen::RowVector3d> centroid(std::size_t(components), Eigen::RowVector3d::Zero());
     std::vector<int> size(std::size_t(components), 0);
     for(std::size_t v = 0; v < component_.size(); ++v)

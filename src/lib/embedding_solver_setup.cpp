@@ -4,6 +4,7 @@
 
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Weights/utils.h>
@@ -167,7 +168,7 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   {
     double sigma_bound = c.sigma_bound;
     if(!(sigma_bound > 0))
-      sigma_bound = (c.mean.colwise().maxCoeff() - c.mean.colwise().minCoeff()).norm() / 3.;
+      sigma_bound = internal::bounding_box_diagonal(c.mean) / 3.;
     const std::vector<double> distance = internal::edge_graph_distances(c.mean, c.edges, c.border);
     for(int v = 0; v < nc; ++v)
       blend[v] = std::isfinite(distance[v]) ? 1. - std::exp(-distance[v] * distance[v] / (sigma_bound * sigma_bound)) : 1.;

@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Atomic_file.h>
+#include <CGAL/MPM/internal/Farthest_point_sampling.h>
 #include <CGAL/MPM/internal/Json_reader.h>
 
 #include <limits>
@@ -152,30 +153,12 @@ Handle_set farthest_point_handles(const Indexed_mesh& mesh, int count, const Poi
   if(count < 1 || count > n)
     throw Input_error("", "handle count", std::to_string(count) + " is not in [1, " + std::to_string(n) + "]");
 
-  const auto squared_distances_to = [&](const Eigen::RowVector3d& p) -> Eigen::VectorXd {
-    return (mesh.points.rowwise() - p).rowwise().squaredNorm();
-  };
-  // Strict comparison over increasing indices breaks ties to the smallest.
-  const auto index_of_max = [n](const Eigen::VectorXd& d) {
-    int best = 0;
-    for(int v = 1; v < n; ++v)
-      if(d[v] > d[best]) best = v;
-    return best;
-  };
-
-  // Squared distance to the nearest chosen vertex; -1 marks chosen ones so
-  // that coincident vertices cannot be chosen twice.
+  // The first handle is the vertex farthest from the centroid (maxCoeff()
+  // takes the first of equals, the lowest index).
+  Eigen::Index first = 0;
+  (mesh.points.rowwise() - mesh.points.colwise().mean()).rowwise().squaredNorm().maxCoeff(&first);
   Eigen::VectorXd nearest = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
-  int next = index_of_max(squared_distances_to(mesh.points.colwise().mean()));
-  std::vector<int> chosen;
-  for(;;) {
-    chosen.push_back(next);
-    if(static_cast<int>(chosen.size()) == count) break;
-    nearest = nearest.cwiseMin(squared_distances_to(mesh.points.row(next)));
-    nearest[next] = -1;
-    next = index_of_max(nearest);
-  }
-  return handles_at(std::move(chosen), targets_source);
+  return handles_at(internal::farthest_point_sampling(mesh.points, count, int(first), nearest), targets_source);
 }
 
 Handle_set handles_per_part(const Labeled_mesh& mesh, int per_part, const Point_matrix& targets_source)

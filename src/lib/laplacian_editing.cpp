@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Laplacian_editing.h>
 #include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/internal/Vertex_components.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
@@ -98,12 +99,7 @@ Laplacian_editing::Laplacian_editing(const Indexed_mesh& mesh, const Laplacian_e
       ++count;
     }
   d.mean_diagonal = count > 0 ? sum / count : 1.;
-  d.component.assign(std::size_t(n), -1);
-  const std::vector<int> face_component = connected_component_labels(mesh);
-  for(std::size_t f = 0; f < face_component.size(); ++f)
-    for(int v : mesh.triangles[f]) d.component[std::size_t(v)] = face_component[f];
-  d.number_of_components =
-    face_component.empty() ? 0 : *std::max_element(face_component.begin(), face_component.end()) + 1;
+  d.component = internal::vertex_component_labels(mesh, &d.number_of_components);
 }
 
 Laplacian_editing::~Laplacian_editing() = default;

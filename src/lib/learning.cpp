@@ -7,6 +7,7 @@
 #include <CGAL/MPM/internal/Training_parts.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -38,12 +39,6 @@ struct Oriented_observation
   bool flipped = false; // rule side 0 is the observation's part b
 };
 
-double bounding_box_diagonal(const Point_matrix& p)
-{
-  if(p.rows() == 0) return 0.;
-  return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
-}
-
 Model_parameters resolve_parameters(const Training_input& first)
 {
   Model_parameters p = first.annotation.parameters;
@@ -60,7 +55,7 @@ Model_parameters resolve_parameters(const Training_input& first)
     throw Input_error(source, "parameters", "explained_variance must be in (0, 1]");
   if(p.modes < 0)
     throw Input_error(source, "parameters", "modes must not be negative");
-  const double diagonal = bounding_box_diagonal(first.mesh.mesh.points);
+  const double diagonal = internal::bounding_box_diagonal(first.mesh.mesh.points);
   if(p.docking_radius < 0) p.docking_radius = 0.05 * diagonal;
   return p;
 }
@@ -73,7 +68,7 @@ double automatic_sigma_sub(const Morphable_part_model& model, const Training_inp
 {
   // A mode whose deviation is rounding (instances identical up to it: the
   // two halves of a cut tube gave 3.7e-15) is no variation.
-  const double diagonal = bounding_box_diagonal(first.mesh.mesh.points);
+  const double diagonal = internal::bounding_box_diagonal(first.mesh.mesh.points);
   std::vector<double> per_vertex;
   for(const Part_type& t : model.types)
     if(t.space.number_of_modes() > 0 && t.space.sigmas[0] / std::sqrt(double(t.number_of_vertices)) > 1e-9 * diagonal)
@@ -89,7 +84,7 @@ double automatic_sigma_sub(const Morphable_part_model& model, const Training_inp
 void check_editable(const Model_parameters& p, const Training_input& first)
 {
   const std::string source = first.mesh.source.empty() ? "training mesh" : first.mesh.source;
-  const double diagonal = bounding_box_diagonal(first.mesh.mesh.points);
+  const double diagonal = internal::bounding_box_diagonal(first.mesh.mesh.points);
   for(const auto& [name, value] : {std::make_pair("sigma_sub", p.sigma_sub), std::make_pair("docking_radius", p.docking_radius)})
     if(!(value > 0.) || !std::isnormal(1. / (value * value)))
     {

@@ -4,10 +4,10 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
+#include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Vertex_components.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
@@ -21,8 +21,7 @@ namespace MPM {
 
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Mesh = internal::Indexed_surface_mesh;
 using vertex_descriptor = Mesh::Vertex_index;
 using edge_descriptor = Mesh::Edge_index;
 using face_descriptor = Mesh::Face_index;
@@ -31,24 +30,6 @@ std::string cut_name(const Cut_specification& spec, std::size_t i)
 {
   const std::string& name = spec.cuts[i].name;
   return "cuts[" + std::to_string(i) + "]" + (name.empty() ? "" : " \"" + name + "\"");
-}
-
-// The halfedge structure gives each edge its two faces (dihedral angles)
-// and is what CGAL's connected_components walks; building it also refuses
-// non-manifold edges and inconsistent orientations.
-Mesh to_surface_mesh(const Indexed_mesh& input, const std::string& source)
-{
-  Mesh mesh;
-  for(int v = 0; v < input.number_of_vertices(); ++v)
-    mesh.add_vertex(Kernel::Point_3(input.points(v, 0), input.points(v, 1), input.points(v, 2)));
-  for(int f = 0; f < input.number_of_faces(); ++f) {
-    const Triangle& t = input.triangles[std::size_t(f)];
-    if(mesh.add_face(vertex_descriptor(t[0]), vertex_descriptor(t[1]), vertex_descriptor(t[2])) == Mesh::null_face())
-      throw Input_error(source, "face " + std::to_string(f),
-                        "non-manifold edge or orientation inconsistent with its neighbours (cutting needs a "
-                        "manifold, consistently oriented triangle mesh)");
-  }
-  return mesh;
 }
 
 Eigen::Vector3d position(const Indexed_mesh& m, vertex_descriptor v) { return m.points.row(int(v)).transpose(); }
@@ -99,15 +80,14 @@ public:
   Cutter(const Indexed_mesh& m, const Cut_specification& spec, const Cutting_options& options,
          const std::string& mesh_source)
     : m_(m), spec_(spec), source_(spec.source.empty() ? "cut specification" : spec.source),
-      mesh_(to_surface_mesh(m, mesh_source))
+      // The halfedge structure gives each edge its two faces (dihedral
+      // angles) and is what CGAL's connected_components walks.
+      mesh_(internal::to_surface_mesh(m, mesh_source, "cutting"))
   {
     weight_ = edge_weights(mesh_, m_, options.feature_weight);
     for(edge_descriptor e : mesh_.edges())
       edges_.push_back({int(mesh_.vertex(e, 0)), int(mesh_.vertex(e, 1)), false});
-    component_.assign(std::size_t(m_.number_of_vertices()), -1);
-    const std::vector<int> face_component = connected_component_labels(m_);
-    for(std::size_t f = 0; f < face_component.size(); ++f)
-      for(int v : m_.triangles[f]) component_[std::size_t(v)] = face_component[f];
+    component_ = internal::vertex_component_labels(m_);
   }
 
   std::vector<int> trace(std::size_t i, bool closed) const

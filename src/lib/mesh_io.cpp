@@ -5,12 +5,15 @@
 #include <CGAL/MPM/internal/Atomic_file.h>
 #include <CGAL/MPM/internal/Mesh_encoding.h>
 #include <CGAL/MPM/internal/Mesh_file_checks.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/IO/PLY/PLY_reader.h>
 
 #include <Eigen/Geometry>
+
+#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <array>
@@ -26,7 +29,6 @@
 #include <iomanip>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -92,9 +94,7 @@ void check_mesh_geometry(const Indexed_mesh& mesh, const std::string& source,
                                                   "would overflow)");
     }
   }
-  // The bounding-box diagonal, without underflow for tiny coordinates.
-  const double diagonal =
-    n == 0 ? 0. : (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).stableNorm();
+  const double diagonal = internal::bounding_box_diagonal(mesh.points);
   // Twice the area of a triangle counted as flat: 1e-14 of the squared
   // bounding-box diagonal, far below any modelled feature yet above rounding.
   // Edges are measured in diagonals, so that the test holds at any scale
@@ -267,15 +267,13 @@ std::vector<int> read_seg_file(const std::string& path)
   return labels;
 }
 
+// A soup need not be a valid Surface_mesh (a fin on an edge, a bowtie), so
+// CGAL's face-graph connected_components() does not apply to it: the faces
+// sharing an edge are joined in Boost's union-find instead.
 std::vector<int> connected_component_labels(const Indexed_mesh& mesh)
 {
   const int nf = mesh.number_of_faces();
-  std::vector<int> parent(static_cast<std::size_t>(nf));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int f) {
-    while(parent[f] != f) f = parent[f] = parent[parent[f]];
-    return f;
-  };
+  boost::disjoint_sets_with_storage<> components(static_cast<std::size_t>(nf));
   std::unordered_map<std::uint64_t, int> face_of_edge;
   face_of_edge.reserve(std::size_t(nf) * 2);
   for(int f = 0; f < nf; ++f)
@@ -283,15 +281,12 @@ std::vector<int> connected_component_labels(const Indexed_mesh& mesh)
       const std::uint32_t a = std::uint32_t(mesh.triangles[f][c]), b = std::uint32_t(mesh.triangles[f][(c + 1) % 3]);
       const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
       const auto inserted = face_of_edge.emplace(key, f);
-      if(!inserted.second) {
-        const int r1 = find(f), r2 = find(inserted.first->second);
-        parent[std::max(r1, r2)] = std::min(r1, r2);
-      }
+      if(!inserted.second) components.union_set(f, inserted.first->second);
     }
   std::vector<int> labels(std::size_t(nf), -1), label_of_root(std::size_t(nf), -1);
   int next = 0;
   for(int f = 0; f < nf; ++f) {
-    int& l = label_of_root[find(f)];
+    int& l = label_of_root[std::size_t(components.find_set(f))];
     if(l < 0) l = next++;
     labels[f] = l;
   }

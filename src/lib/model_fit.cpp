@@ -5,6 +5,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Part_type_proposal.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>
 #include <chrono>
@@ -17,12 +18,6 @@ namespace CGAL {
 namespace MPM {
 
 namespace {
-
-double bounding_box_diagonal(const Point_matrix& p)
-{
-  if(p.rows() == 0) return 0.;
-  return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
-}
 
 // A segment of the new mesh with its vertices numbered by first appearance
 // in its faces, in face order: the numbering learning gives a part, so that
@@ -326,7 +321,7 @@ Model_fit fit_morphable_part_model(const Morphable_part_model& model, const Labe
   }
 
   Model_fit result;
-  result.mesh_diagonal = bounding_box_diagonal(mesh.mesh.points);
+  result.mesh_diagonal = internal::bounding_box_diagonal(mesh.mesh.points);
   double squared = 0.;
   Eigen::Index points = 0;
   for(std::size_t i = 0; i < labels.size(); ++i)
@@ -347,7 +342,7 @@ Model_fit fit_morphable_part_model(const Morphable_part_model& model, const Labe
     fit.type = choice.type;
     fit.type_source = choice.source;
     fit.seam_loops = templates.signatures[std::size_t(choice.type)].loops;
-    fit.segment_diagonal = bounding_box_diagonal(segments.at(label).mesh.points);
+    fit.segment_diagonal = internal::bounding_box_diagonal(segments.at(label).mesh.points);
     correspond_segment(model, templates, mesh, segments.at(label), type_of_label, options, fit, result.warnings);
     fit_shape_space(type, result.mesh_diagonal, fit);
     squared += (fit.fitted - fit.corresponded).squaredNorm();

@@ -29,10 +29,7 @@ Point_matrix gather_rows(const Point_matrix& points, const std::vector<int>& ver
 
 Point_matrix to_space_frame(const Rigid_motion& motion, const Point_matrix& points)
 {
-  Rigid_motion inverse;
-  inverse.rotation = motion.rotation.transpose();
-  inverse.translation = -(inverse.rotation * motion.translation);
-  return inverse.apply(points);
+  return motion.inverse().apply(points);
 }
 
 bool seam_is_collinear(const Point_matrix& p)

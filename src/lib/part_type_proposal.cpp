@@ -10,12 +10,13 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <deque>
-#include <numeric>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -45,18 +46,6 @@ std::unordered_map<std::uint64_t, std::vector<int>> faces_of_edges(const Indexed
     for(int k = 0; k < 3; ++k) r[edge_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])].push_back(f);
   return r;
 }
-
-struct Union_find
-{
-  std::vector<int> parent;
-  explicit Union_find(int n) : parent(std::size_t(n)) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x)
-  {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(int a, int b) { parent[find(a)] = find(b); }
-};
 
 std::map<int, std::vector<int>> faces_by_label(const Labeled_mesh& lm)
 {
@@ -368,32 +357,35 @@ void validate_segmentation(const Labeled_mesh& lm)
     const std::vector<int>& around = faces_of_vertex[std::size_t(v)];
     if(around.size() < 2) continue;
     std::unordered_map<int, int> first_face_with; // other vertex -> local face
-    Union_find fans(int(around.size()));
+    boost::disjoint_sets_with_storage<> fans(around.size());
     for(int i = 0; i < int(around.size()); ++i)
       for(int w : m.triangles[around[i]])
         if(w != v)
         {
           const auto it = first_face_with.emplace(w, i);
-          if(!it.second) fans.join(i, it.first->second);
+          if(!it.second) fans.union_set(i, it.first->second);
         }
     for(int i = 1; i < int(around.size()); ++i)
-      if(fans.find(i) != fans.find(0))
+      if(fans.find_set(i) != fans.find_set(0))
         throw Input_error(lm.source, segments_of(around) + ": vertex " + std::to_string(v),
                           "its faces form several fans (a pinched, non-manifold vertex); repair the mesh first "
                           "(e.g. CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices())");
   }
   // Each segment one face-connected piece.
-  Union_find pieces(m.number_of_faces());
+  boost::disjoint_sets_with_storage<> pieces(std::size_t(m.number_of_faces()));
   for(const auto& [key, faces] : edges)
-    if(faces.size() == 2 && lm.face_labels[faces[0]] == lm.face_labels[faces[1]]) pieces.join(faces[0], faces[1]);
+    if(faces.size() == 2 && lm.face_labels[faces[0]] == lm.face_labels[faces[1]]) pieces.union_set(faces[0], faces[1]);
   for(const auto& [label, faces] : faces_by_label(lm))
   {
     std::map<int, std::vector<int>> by_piece;
-    for(int f : faces) by_piece[pieces.find(f)].push_back(f);
+    for(int f : faces) by_piece[pieces.find_set(f)].push_back(f);
     if(by_piece.size() < 2) continue;
     std::vector<std::vector<int>> list;
     for(auto& [root, fs] : by_piece) list.push_back(std::move(fs));
-    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    // Largest first; ties by first face, so that the message does not depend on the union-find's roots.
+    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) {
+      return a.size() != b.size() ? a.size() > b.size() : a.front() < b.front();
+    });
     std::string sizes;
     for(std::size_t i = 0; i < list.size() && i < 5; ++i) sizes += (i ? ", " : "") + std::to_string(list[i].size());
     if(list.size() > 5) sizes += ", ...";

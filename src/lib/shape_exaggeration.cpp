@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/internal/Shape_exaggeration.h>
+#include <CGAL/MPM/internal/Vertex_normals.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -26,19 +27,6 @@ Edge_set edges_of(const std::vector<Triangle>& triangles)
   return edges;
 }
 
-Point_matrix area_weighted_normals(const Point_matrix& p, const std::vector<Triangle>& triangles)
-{
-  Point_matrix n = Point_matrix::Zero(p.rows(), 3);
-  for(const Triangle& t : triangles)
-  {
-    const Eigen::RowVector3d a = (p.row(t[1]) - p.row(t[0])).cross(p.row(t[2]) - p.row(t[0]));
-    for(int v : t) n.row(v) += a;
-  }
-  for(Eigen::Index v = 0; v < n.rows(); ++v)
-    if(n.row(v).norm() > 0.) n.row(v).normalize();
-  return n;
-}
-
 // Per vertex, the linear map that best takes the mean's edges at the vertex
 // (and its normal, so that the map is defined across the surface) to the
 // shape's.
@@ -60,8 +48,8 @@ std::vector<Eigen::Matrix3d> local_maps(const Point_matrix& mean, const Point_ma
       ++degree[v];
     }
   }
-  const Point_matrix mean_normals = area_weighted_normals(mean, triangles),
-                     shape_normals = area_weighted_normals(shape, triangles);
+  const Point_matrix mean_normals = area_weighted_vertex_normals(mean, triangles),
+                     shape_normals = area_weighted_vertex_normals(shape, triangles);
   std::vector<Eigen::Matrix3d> maps(n, Eigen::Matrix3d::Identity());
   for(Eigen::Index v = 0; v < n; ++v)
   {

@@ -81,10 +81,7 @@ double Shape_space::fit(const Point_matrix& points, Eigen::VectorXd& coordinates
   double residual = 0.;
   for(int it = 0; it < 100; ++it)
   {
-    Rigid_motion inverse;
-    inverse.rotation = motion.rotation.transpose();
-    inverse.translation = -(inverse.rotation * motion.translation);
-    const Eigen::VectorXd local = flatten(inverse.apply(points)) - flatten(mean);
+    const Eigen::VectorXd local = flatten(motion.inverse().apply(points)) - flatten(mean);
     coordinates = modes.transpose() * local;
     const Point_matrix model = shape(coordinates);
     motion = fit_rigid_motion(model, points);

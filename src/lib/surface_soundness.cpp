@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Surface_soundness.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <Eigen/Geometry>
 
@@ -45,29 +47,6 @@ std::vector<std::vector<std::size_t>> faces_of(const Indexed_mesh& mesh)
   return f;
 }
 
-// Pieces through shared edges (a union-find over faces; a soup need not
-// be a valid Surface_mesh, so CGAL's face-graph components do not apply).
-int components_of(const Indexed_mesh& mesh)
-{
-  std::vector<int> parent(mesh.triangles.size());
-  for(std::size_t f = 0; f < parent.size(); ++f) parent[f] = int(f);
-  const auto find = [&](int f) {
-    while(parent[f] != f) f = parent[f] = parent[parent[f]];
-    return f;
-  };
-  std::map<std::pair<int, int>, int> face_of_edge;
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-      const auto [it, added] = face_of_edge.insert({{std::min(a, b), std::max(a, b)}, int(f)});
-      if(!added) parent[find(int(f))] = find(it->second);
-    }
-  int pieces = 0;
-  for(std::size_t f = 0; f < parent.size(); ++f) pieces += find(int(f)) == int(f);
-  return pieces;
-}
-
 Eigen::Vector3d normal_of(const Indexed_mesh& mesh, const Triangle& t)
 {
   const Eigen::Vector3d a = mesh.points.row(t[0]).transpose(), b = mesh.points.row(t[1]).transpose(),
@@ -106,7 +85,8 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
                                 const std::vector<int>* face_groups)
 {
   Surface_soundness s;
-  s.components = components_of(mesh);
+  const std::vector<int> component = connected_component_labels(mesh);
+  s.components = component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
   std::map<std::pair<int, int>, int> count;
   for(const Triangle& t : mesh.triangles)
     for(int k = 0; k < 3; ++k) ++count[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
@@ -182,7 +162,7 @@ std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surf
 double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
 {
   const Mesh ma = surface_mesh_of(a), mb = surface_mesh_of(b);
-  const double diagonal = (b.points.colwise().maxCoeff() - b.points.colwise().minCoeff()).norm();
+  const double diagonal = internal::bounding_box_diagonal(b.points);
   const double d = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
     ma, mb, CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)),
     CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)));

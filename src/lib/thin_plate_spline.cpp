@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Thin_plate_spline.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -23,7 +24,7 @@ Thin_plate_spline::Thin_plate_spline(const Point_matrix& centres, const Point_ma
 
   // Coincident centres: one centre when they agree, an error when they do not.
   const Eigen::Index given = centres.rows();
-  const double scale = (centres.colwise().maxCoeff() - centres.colwise().minCoeff()).norm();
+  const double scale = internal::bounding_box_diagonal(centres);
   std::vector<Eigen::Index> kept;
   for(Eigen::Index i = 0; i < given; ++i)
   {

@@ -4,26 +4,16 @@
 
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/Part_colors.h>
 #include <CGAL/MPM/internal/Mesh_file_checks.h>
 #include <CGAL/MPM/Part_graph_editing.h>
 #include <CGAL/MPM/Part_graph_io.h>
 
 #include <algorithm>
-#include <array>
 
 namespace mpm {
 
 using CGAL::MPM::internal::lower_extension;
-
-namespace {
-
-// Tableau 10, as the editing commands use (doc/MPM/Command_line.md).
-constexpr std::array<std::array<unsigned char, 3>, 10> type_palette = {{
-  {78, 121, 167}, {242, 142, 43}, {225, 87, 89},  {118, 183, 178}, {89, 161, 79},
-  {237, 201, 72}, {176, 122, 161}, {255, 157, 167}, {156, 117, 95}, {186, 176, 172},
-}};
-
-} // namespace
 
 CGAL::MPM::Morphable_part_model load_model_with_grammar(const std::string& path, bool observed_only, int* derived)
 {
@@ -52,7 +42,7 @@ void write_assembly_mesh(const CGAL::MPM::Assembly& assembly, const std::string&
   Eigen::Matrix<unsigned char, Eigen::Dynamic, 3> colors(assembly.mesh.number_of_faces(), 3);
   for(int f = 0; f < colors.rows(); ++f)
   {
-    const auto& c = type_palette[assembly.face_types[f] % type_palette.size()];
+    const CGAL::MPM::Rgb_color c = CGAL::MPM::part_type_color(assembly.face_types[f]);
     colors.row(f) << c[0], c[1], c[2];
   }
   CGAL::MPM::write_mesh_file(assembly.mesh, path, &colors, options);

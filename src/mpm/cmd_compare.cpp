@@ -13,6 +13,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <chrono>
 #include <climits>
@@ -26,11 +27,6 @@ namespace mpm {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double diagonal(const CGAL::MPM::Point_matrix& p)
-{
-  return p.rows() == 0 ? 0. : (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
-}
 
 std::vector<std::string> parse_methods(const std::string& text)
 {
@@ -86,8 +82,8 @@ int run_compare(const Args& args, Context& context)
                                           std::to_string(example) + " of the model has " +
                                           std::to_string(mesh.points.rows()));
   }
-  const double d = diagonal(mesh.points);
-  const double truth_d = truth.rows() > 0 ? diagonal(truth) : 0.;
+  const double d = CGAL::MPM::internal::bounding_box_diagonal(mesh.points);
+  const double truth_d = CGAL::MPM::internal::bounding_box_diagonal(truth);
 
   Json rows = Json::array();
   for(std::size_t m = 0; m < methods.size(); ++m)

@@ -8,11 +8,12 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/Part_colors.h>
 #include <CGAL/MPM/internal/Mesh_file_checks.h>
 #include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <climits>
 #include <cmath>
@@ -28,15 +29,6 @@ namespace {
 using Color_matrix = Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>;
 using Clock = std::chrono::steady_clock;
 
-// Tableau 10: distinct hues that stay tellable apart in a viewer's shading.
-// Documented in doc/MPM/Command_line.md; keep the two in step.
-constexpr std::array<std::array<unsigned char, 3>, 10> type_palette = {{
-  {78, 121, 167}, {242, 142, 43}, {225, 87, 89},  {118, 183, 178}, {89, 161, 79},
-  {237, 201, 72}, {176, 122, 161}, {255, 157, 167}, {156, 117, 95}, {186, 176, 172},
-}};
-// Faces whose label is no part of the example's graph.
-constexpr std::array<unsigned char, 3> unknown_part_color = {{64, 64, 64}};
-
 Color_matrix part_type_colors(const CGAL::MPM::Training_example& example)
 {
   std::map<int, int> type_of_label;
@@ -44,9 +36,9 @@ Color_matrix part_type_colors(const CGAL::MPM::Training_example& example)
   Color_matrix colors(example.mesh.number_of_faces(), 3);
   for(int f = 0; f < colors.rows(); ++f)
   {
+    // A face whose label is no part of the example's graph gets the colour of no known type.
     const auto it = type_of_label.find(example.face_labels[f]);
-    const std::array<unsigned char, 3>& c =
-      it == type_of_label.end() ? unknown_part_color : type_palette[it->second % type_palette.size()];
+    const CGAL::MPM::Rgb_color c = CGAL::MPM::part_type_color(it == type_of_label.end() ? -1 : it->second);
     colors.row(f) << c[0], c[1], c[2];
   }
   return colors;
@@ -66,7 +58,7 @@ const Option_spec& find_spec(const std::vector<Option_spec>& options, const std:
 // diagonal of `before`, so that values compare across models.
 double relative_rms_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::Point_matrix& after)
 {
-  const double diagonal = (before.colwise().maxCoeff() - before.colwise().minCoeff()).norm();
+  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(before);
   const double rms = std::sqrt((after - before).rowwise().squaredNorm().mean());
   return diagonal > 0 ? rms / diagonal : rms;
 }
@@ -76,13 +68,11 @@ double relative_rms_displacement(const CGAL::MPM::Point_matrix& before, const CG
 // 1e308 overflowed the solve, and neither error named the handle.
 constexpr double farthest_sensible_move = 100.;
 
-double diagonal_of(const CGAL::MPM::Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
-
 // Refused before the solve, naming the handle.
 void check_handle_targets(const CGAL::MPM::Point_matrix& rest, const CGAL::MPM::Handle_set& handles,
                           const std::string& handles_file)
 {
-  const double diagonal = diagonal_of(rest);
+  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(rest);
   for(int k = 0; k < handles.size(); ++k)
   {
     const double asked = (handles.targets.row(k) - rest.row(handles.vertices[k])).stableNorm() / diagonal;
@@ -98,7 +88,7 @@ void check_handle_targets(const CGAL::MPM::Point_matrix& rest, const CGAL::MPM::
 void check_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::Point_matrix& after,
                         const std::string& model_path)
 {
-  const double diagonal = diagonal_of(before);
+  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(before);
   const double moved = (after - before).rowwise().norm().maxCoeff() / diagonal;
   if(diagonal > 0. && moved > farthest_sensible_move)
     throw CGAL::MPM::Computation_error("the edit of " + model_path + " moves vertices by up to " + format_number(moved) +

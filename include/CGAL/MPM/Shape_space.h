@@ -25,6 +25,15 @@ struct Rigid_motion
   {
     return (p * rotation.transpose()).rowwise() + translation.transpose();
   }
+
+  /// The motion that undoes this one: `x -> rotation^T * (x - translation)`.
+  Rigid_motion inverse() const
+  {
+    Rigid_motion r;
+    r.rotation = rotation.transpose();
+    r.translation = -(r.rotation * translation);
+    return r;
+  }
 };
 
 /// \ingroup PkgMPMRef

@@ -15,6 +15,7 @@
 #include <CGAL/MPM/Part_type.h>
 #include <CGAL/MPM/Shape_space.h>
 #include <CGAL/MPM/Thin_plate_spline.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -47,9 +48,6 @@ using Sparse = Eigen::SparseMatrix<double>;
 // Between Eigen and CGAL points.
 inline Point_3 to_point(const Vec3& v) { return Point_3(v.x(), v.y(), v.z()); }
 inline Vec3 to_vec(const Point_3& p) { return Vec3(p.x(), p.y(), p.z()); }
-
-// Length of the bounding-box diagonal of the rows of `p`.
-inline double diagonal_of(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 
 // A boundary loop parametrized by arc length over [0, 1).
 struct Loop

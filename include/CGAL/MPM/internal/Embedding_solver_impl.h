@@ -10,6 +10,7 @@
 // (vertex_block_solver.cpp).
 
 #include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Rotation_lbfgs.h>
 
 #include <Eigen/Core>
@@ -243,7 +244,7 @@ struct Embedding_solver::Impl
   // the unit below which energy changes are rounding, not divergence.
   double energy_unit() const
   {
-    const double diagonal = n > 0 ? (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).norm() : 1.;
+    const double diagonal = n > 0 ? internal::bounding_box_diagonal(mesh.points) : 1.;
     return options.handle_weight * mean_diagonal * std::max(diagonal * diagonal, std::numeric_limits<double>::min());
   }
 };
