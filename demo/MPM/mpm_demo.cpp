@@ -196,7 +196,7 @@ private:
     if(frames < 1) throw Script_error("profile-drag needs at least one frame");
     if(session_.handle_vertices().empty()) throw Script_error("profile-drag needs a handle (add one first)");
     const Point_matrix& p = session_.rest().points;
-    const double diagonal = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+    const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(p);
     const Eigen::RowVector3d step = 0.002 * diagonal * Eigen::RowVector3d(1., 1., 1.).normalized();
     double solver_ms = 0., shown_ms = 0., paint_ms = 0.;
     for(int i = 0; i < frames; ++i)

@@ -16,6 +16,7 @@
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/learn_morphable_part_model.h>
 
 #include <nlohmann/json.hpp>
@@ -79,7 +80,7 @@ Json drag(int vertices, int drags)
   solver.preprocess();
   solver.set_handles(handles.vertices, handles.targets);
   solver.preprocess();
-  const double diagonal = (example.mesh.points.colwise().maxCoeff() - example.mesh.points.colwise().minCoeff()).norm();
+  const double diagonal = internal::bounding_box_diagonal(example.mesh.points);
   const Eigen::RowVector3d step = 0.01 * diagonal * Eigen::RowVector3d(1., 1., 1.).normalized();
   Point_matrix targets = handles.targets;
   double checksum = 0.;
