@@ -200,13 +200,14 @@ void BM_frame(benchmark::State& state, Bench_model model, Global_step step, Spar
 // The wait after choosing handles, as the user meets it: the solver is
 // built when the model is loaded (not timed); set_handles() (factorization
 // and blocks), solve() from rest to convergence and positions() are.
-// What a new handle set costs once the model is loaded: on a solver built
-// and preprocessed without handles, set_handles() and preprocess() (the
-// low-rank update of the factored block and the handle terms). The one-time
-// part, the factorization without handles, is BM_factor's.
-void BM_handle_set(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
+// On a solver built and preprocessed without handles (a model just loaded),
+// times `after_load(solver, handles)`; building and destroying the solver
+// are not timed. False when the fixtures or the solver failed (the state says why).
+template <class After_load>
+bool time_on_loaded_solver(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver,
+                           After_load after_load)
 {
-  if(!fixtures_ready(state, model)) return;
+  if(!fixtures_ready(state, model)) return false;
   const Embedding_problem& problem = mpm_bench::deformation_problem(model);
   const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
   const mpm_bench::Memory_probe memory;
@@ -217,48 +218,44 @@ void BM_handle_set(benchmark::State& state, Bench_model model, Global_step step,
       mpm.emplace(problem, options_of(step, solver));
       mpm->preprocess();
       state.ResumeTiming();
-      mpm->set_handles(handles.vertices, handles.targets);
-      mpm->preprocess();
+      after_load(*mpm, handles);
       state.PauseTiming(); // not the destruction
       mpm.reset();
       state.ResumeTiming();
     }
   } catch(const std::exception& e) {
     state.SkipWithError(e.what());
-    return;
+    return false;
   }
   set_counters(state, model, memory);
+  return true;
 }
 
+// What a new handle set costs once the model is loaded: set_handles() and
+// preprocess() (the low-rank update of the factored block and the handle
+// terms). The one-time load costs about what BM_factor measures.
+void BM_handle_set(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
+{
+  time_on_loaded_solver(state, model, step, solver, [](Embedding_solver& mpm, const CGAL::MPM::Handle_set& handles) {
+    mpm.set_handles(handles.vertices, handles.targets);
+    mpm.preprocess();
+  });
+}
+
+// The wait after choosing handles: the new handle set, solve() from rest to
+// convergence, positions().
 void BM_first_frame(benchmark::State& state, Bench_model model, Global_step step, Sparse_solver solver)
 {
-  if(!fixtures_ready(state, model)) return;
-  const Embedding_problem& problem = mpm_bench::deformation_problem(model);
-  const auto& handles = mpm_bench::farthest_handles(model, int(state.range(0)));
-  const mpm_bench::Memory_probe memory;
   double iterations = 0., converged = 0.;
-  try {
-    for(auto _ : state) {
-      state.PauseTiming();
-      std::optional<Embedding_solver> mpm;
-      mpm.emplace(problem, options_of(step, solver));
-      mpm->preprocess(); // when the model is loaded, before any handle is chosen
-      state.ResumeTiming();
-      mpm->set_handles(handles.vertices, handles.targets);
-      const CGAL::MPM::Solve_report report = mpm->solve();
-      benchmark::DoNotOptimize(mpm->positions().data());
-      iterations += report.iterations;
-      converged += report.converged ? 1. : 0.;
-      state.PauseTiming(); // not the destruction
-      mpm.reset();
-      state.ResumeTiming();
-    }
-  } catch(const std::exception& e) {
-    state.SkipWithError(e.what());
-    return;
-  }
-  set_frame_counters(state, iterations, converged);
-  set_counters(state, model, memory);
+  const bool ran = time_on_loaded_solver(state, model, step, solver,
+                                         [&](Embedding_solver& mpm, const CGAL::MPM::Handle_set& handles) {
+    mpm.set_handles(handles.vertices, handles.targets);
+    const CGAL::MPM::Solve_report report = mpm.solve();
+    benchmark::DoNotOptimize(mpm.positions().data());
+    iterations += report.iterations;
+    converged += report.converged ? 1. : 0.;
+  });
+  if(ran) set_frame_counters(state, iterations, converged);
 }
 
 void BM_learn(benchmark::State& state, Bench_model model)
