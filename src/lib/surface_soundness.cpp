@@ -163,9 +163,10 @@ double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
 {
   const Mesh ma = surface_mesh_of(a), mb = surface_mesh_of(b);
   const double diagonal = internal::bounding_box_diagonal(b.points);
-  const double d = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
-    ma, mb, CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)),
-    CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)));
+  // A fixed seed: the sampling is otherwise seeded by the clock, and the
+  // real-mesh table varied from run to run (0.29-0.33% on ant_97).
+  const auto sampling = CGAL::parameters::number_of_points_per_area_unit(4000. / (diagonal * diagonal)).random_seed(1);
+  const double d = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(ma, mb, sampling, sampling);
   return d / diagonal;
 }
 
