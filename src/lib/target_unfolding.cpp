@@ -197,7 +197,7 @@ Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest,
   Point_matrix best = target;
   std::size_t best_count = inverted.size();
   // A ring more each round: the fold's edge needs room to turn back.
-  for(int round = 0; round < 4 && best_count > 0; ++round)
+  for(int round = 0; round < 10 && best_count > 0; ++round)
   {
     grow(region, next);
     Point_matrix candidate = target;
