@@ -44,6 +44,7 @@ struct Edit_result
   int inverted_before_unfolding = 0; // in the solver's result, before unfold_faces()
   int new_inverted = 0;      // faces inside out within their part that were not folded at rest
   int unfolded = 0;          // inverted against the rest because the edit unfolded a rest fold
+  int new_folds = 0;         // written faces folded over their neighbourhood, not folded at rest
   int new_self_intersections = 0;
   double drift = 0.; // largest move in ten more iterations after the solve, over the diagonal
   double worst_length_change = 0.; // largest |length / rest length - 1| of a part
@@ -82,6 +83,8 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   r.soundness = check_surface(after, &problem.mesh, &model.examples.front().face_labels);
   for(int f : inverted_faces(after, problem.mesh, &model.examples.front().face_labels))
     ++(std::binary_search(folded_at_rest.begin(), folded_at_rest.end(), f) ? r.unfolded : r.new_inverted);
+  for(int f : locally_inverted_faces(after, problem.mesh))
+    r.new_folds += !std::binary_search(folded_at_rest.begin(), folded_at_rest.end(), f);
   r.new_self_intersections = std::max(0, r.soundness.self_intersections - std::max(0, rest.self_intersections));
   std::map<int, std::pair<double, double>> range; // per type: rest lengths
   const Training_example& ex = model.examples.front();
@@ -214,7 +217,7 @@ std::string edit_cells(const Edit_result& r)
   std::ostringstream s;
   s << (r.converged ? "yes " : "no ") << r.iterations << " | " << std::setprecision(2) << 100. * r.drift << " | "
     << r.soundness.border_edges << " | "
-    << r.soundness.flipped_faces << " | " << r.inverted_before_unfolding << " | " << r.new_inverted << " (" << r.unfolded << ") | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
+    << r.soundness.flipped_faces << " | " << r.inverted_before_unfolding << " | " << r.new_inverted << " (" << r.unfolded << ") | " << r.new_folds << " | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
     << 100. * r.worst_length_change << "% (" << r.parts_outside_range << ")";
   return s.str();
 }
@@ -234,9 +237,9 @@ int main(int argc, char** argv)
       if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | folded faces | new self-int. | Hausdorff % | "
-               "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | inverted in part, solver's result | new inverted in part, written (rest folds unfolded) | new self-int. | "
+               "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | inverted in part, solver's result | new inverted in part, written (rest folds unfolded) | new folds, written | new self-int. | "
                "worst length change (parts out of range) |\n"
-               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
   {
     try

@@ -1,9 +1,11 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Surface_soundness.h>
+
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Target_unfolding.h>
 
 #include <Eigen/Geometry>
 
@@ -107,6 +109,13 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
     s.inverted_faces = static_cast<int>(inverted_faces(mesh, *reference, face_groups).size());
   }
   return s;
+}
+
+std::vector<int> locally_inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference)
+{
+  if(reference.triangles != mesh.triangles || reference.points.rows() != mesh.points.rows())
+    throw Input_error("locally_inverted_faces", "reference", "does not have the mesh's vertices and triangles");
+  return internal::locally_inverted_faces(mesh.points, reference.points, mesh.triangles);
 }
 
 std::vector<int> inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference,

@@ -183,6 +183,12 @@ void reshape_piece(const std::vector<int>& piece, const Point_matrix& target, co
 
 } // namespace
 
+std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_matrix& rest,
+                                        const std::vector<Triangle>& triangles)
+{
+  return locally_inverted_faces(target, rest, triangles, neighbours_of(target.rows(), triangles));
+}
+
 Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest, const std::vector<Triangle>& triangles,
                            const std::vector<int>& held)
 {

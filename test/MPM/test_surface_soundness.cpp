@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -60,4 +61,41 @@ TEST(Surface_soundness, a_part_turned_as_a_whole_flips_faces_but_inverts_none)
 
   groups.pop_back();
   EXPECT_THROW(inverted_faces(turned, rest, &groups), Input_error);
+}
+
+TEST(Surface_soundness, a_thin_tube_curled_inverts_faces_within_its_part_but_folds_none)
+{
+  // The first tube made thin, then curled around the x axis by 270 degrees
+  // along its length (a curled finger): its ends face against the tube's
+  // mean rotation, yet the surface nowhere turns back on itself.
+  Indexed_mesh rest = two_tubes();
+  rest.points.topRows(120).leftCols(2) *= 0.2;
+  Indexed_mesh curled = rest;
+  const double radius = 4.5 / (1.5 * M_PI);
+  for(int v = 0; v < 120; ++v)
+  {
+    const double angle = rest.points(v, 2) / radius, y = rest.points(v, 1);
+    curled.points(v, 1) = radius - (radius - y) * std::cos(angle);
+    curled.points(v, 2) = (radius - y) * std::sin(angle);
+  }
+  std::vector<int> groups(rest.triangles.size(), 0);
+  std::fill(groups.begin() + groups.size() / 2, groups.end(), 1);
+  EXPECT_GT(inverted_faces(curled, rest, &groups).size(), 10u);
+  EXPECT_TRUE(locally_inverted_faces(curled, rest).empty());
+
+  // One vertex of the second tube pushed through to the far side: its
+  // faces fold over their neighbours (those whose three corners' rings all
+  // see it), and only they.
+  Indexed_mesh pushed = rest;
+  const int v = 120 + 5 * 12;
+  pushed.points(v, 0) = 2.;
+  const std::vector<int> folded = locally_inverted_faces(pushed, rest);
+  EXPECT_GE(folded.size(), 2u);
+  EXPECT_LE(folded.size(), 6u);
+  for(int f : folded)
+    EXPECT_NE(std::find(rest.triangles[f].begin(), rest.triangles[f].end(), v), rest.triangles[f].end());
+
+  Indexed_mesh fewer = rest;
+  fewer.triangles.pop_back();
+  EXPECT_THROW(locally_inverted_faces(curled, fewer), Input_error);
 }

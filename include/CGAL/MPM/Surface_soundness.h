@@ -60,6 +60,15 @@ std::vector<int> inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& re
                                 const std::vector<int>* face_groups = nullptr);
 
 /// \ingroup PkgMPMRef
+/// The faces of `mesh` folded over against `reference` (the same triangles
+/// at other positions): the face's normal points against the reference's
+/// once the best rotation (Kabsch) of each of its corners' two-ring
+/// neighbourhoods is taken out. Unlike `inverted_faces()`, a part bent by
+/// more than 90 degrees along its length counts none: only a crease where
+/// the surface turns back on itself does. `unfold_faces()` takes these out.
+std::vector<int> locally_inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& reference);
+
+/// \ingroup PkgMPMRef
 /// Faces of `mesh` that lie turned over on `surface`, which they
 /// approximate (for example a learned example against its input): the
 /// face's normal points against the normal of the face of `surface`

@@ -26,6 +26,12 @@ namespace internal {
 Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest, const std::vector<Triangle>& triangles,
                            const std::vector<int>& held = {});
 
+// The faces of `target` turned inside out against `rest` (the same
+// triangles) once each corner's two-ring rotation is taken out (see
+// `locally_inverted_faces()`): what `unfold_target()` removes.
+std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_matrix& rest,
+                                        const std::vector<Triangle>& triangles);
+
 } // namespace internal
 } // namespace MPM
 } // namespace CGAL
