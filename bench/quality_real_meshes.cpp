@@ -198,6 +198,7 @@ Insertions insert_into_every_chain(Morphable_part_model model)
     {
       Part_graph graph = example;
       const int inserted = insert_segment(model, graph, int(k));
+      choose_segment_shape(model, graph, inserted);
       const Assembly a = assemble(model, graph);
       const Surface_soundness s = check_surface(a.mesh);
       if(s.components == 1 && s.border_edges == 0 && s.non_manifold_edges == 0) ++r.closed;

@@ -575,6 +575,7 @@ int Session::insert_segment(int node)
 {
   MPM::Part_graph graph = edit_graph_;
   const int added = MPM::insert_segment(model_, graph, parent_edge(node));
+  MPM::choose_segment_shape(model_, graph, added);
   edit_graph_ = std::move(graph);
   graph_edited_ = true;
   rebuild();

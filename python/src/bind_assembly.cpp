@@ -101,12 +101,20 @@ close_cycle(); embed it with assemble().)doc")
         "Adds to the model the repetition rule of every two-site part type (a finger segment docked to "
         "another of its type), so chains can grow. Returns the new rules' indices.");
   m.def("root_node", &root_node, py::arg("graph"), "The node with the most dockings (the palm, the body).");
-  m.def("insert_segment", [](const Morphable_part_model& model, Part_graph& graph, int edge, int type) {
+  m.def("insert_segment", [](const Morphable_part_model& model, Part_graph& graph, int edge, int type, bool choose_shape) {
     if(edge < 0 || edge >= int(graph.edges.size()))
       throw py::value_error("edge: " + std::to_string(edge) + " does not exist");
-    return insert_segment(model, graph, edge, type); },
-        py::arg("model"), py::arg("graph"), py::arg("edge"), py::arg("type") = -1,
-        "Inserts a segment into docking `edge` (changes graph); returns the new node.");
+    const int node = insert_segment(model, graph, edge, type);
+    if(choose_shape) choose_segment_shape(model, graph, node);
+    return node; },
+        py::arg("model"), py::arg("graph"), py::arg("edge"), py::arg("type") = -1, py::arg("choose_shape") = true,
+        "Inserts a segment into docking `edge` (changes graph); returns the new node. With choose_shape, "
+        "its shape is then the one that crosses the rest least (choose_segment_shape).");
+  m.def("choose_segment_shape", [](const Morphable_part_model& model, Part_graph& graph, int node) {
+    check_node(graph, node, "node");
+    return choose_segment_shape(model, graph, node); }, py::arg("model"), py::arg("graph"), py::arg("node"),
+        "Gives `node` the coordinates (its own, the mean or a training instance's) whose rigid placement "
+        "crosses the rest least; returns the intersecting face pairs of that placement.");
   m.def("remove_segment", [](const Morphable_part_model& model, Part_graph& graph, int node) {
     check_node(graph, node, "node");
     return remove_segment(model, graph, node); }, py::arg("model"), py::arg("graph"), py::arg("node"),

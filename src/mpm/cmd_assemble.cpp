@@ -95,8 +95,10 @@ std::vector<std::string> apply_edits(const Args& args, const Morphable_part_mode
     if(o == "insert")
     {
       const int n = insert_segment(model, graph, index_of(o, item.value));
+      const int crossings = choose_segment_shape(model, graph, n);
       done.push_back("inserted node " + std::to_string(n) + " (" + model.types[graph.nodes[n].type].name +
-                     ") into edge " + item.value);
+                     ") into edge " + item.value + ", shaped to cross the rest least (" + std::to_string(crossings) +
+                     " face pairs intersect when placed)");
     }
     else if(o == "remove-segment")
     {

@@ -199,7 +199,12 @@ TEST(Assembly, hand_with_an_inserted_finger_segment)
   Part_graph g = part_graph_of_example(m);
   const int middle = node_of_type(m, g, "middle", 1), distal = node_of_type(m, g, "distal", 1);
   ASSERT_GE(edge_between(g, middle, distal), 0);
-  insert_segment(m, g, edge_between(g, middle, distal));
+  const int added = insert_segment(m, g, edge_between(g, middle, distal));
+  // Nothing crosses the copied middle's placement: the choice keeps it.
+  const Eigen::VectorXd copied = g.nodes[added].coordinates;
+  EXPECT_EQ(choose_segment_shape(m, g, added), 0);
+  EXPECT_EQ(g.nodes[added].coordinates, copied);
+  EXPECT_THROW(choose_segment_shape(m, g, int(g.nodes.size())), Input_error);
   const double factor = check_edited(m, g, "hand, one finger with an inserted middle");
   EXPECT_LT(factor, energy_factor_bound);
 }

@@ -99,6 +99,17 @@ int root_node(const Part_graph& graph);
 int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edge, int type = -1);
 
 /// \ingroup PkgMPMRef
+/// Gives node `node` (typically one `insert_segment()` just added) the shape
+/// whose rigid placement (`assemble()` without the solve) crosses the rest
+/// least: among its current coordinates, its type's mean and each training
+/// instance's coordinates, the one with the fewest pairs of intersecting
+/// faces (CGAL's `self_intersections`), the current one on ties. A segment
+/// copied from a curled neighbour continues the curl, into the palm or
+/// the next finger; a straighter instance of the same type does not.
+/// Returns the number of intersecting face pairs of the placement kept.
+int choose_segment_shape(const Morphable_part_model& model, Part_graph& graph, int node);
+
+/// \ingroup PkgMPMRef
 /// Removes nodes (with their edges) and renumbers the rest in order.
 /// Returns old node index -> new index (-1: removed).
 std::vector<int> remove_nodes(Part_graph& graph, const std::vector<int>& nodes);
