@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <utility>
@@ -150,25 +149,31 @@ double cut_discrepancy(const Indexed_mesh& mesh, const std::vector<int>& labels,
   return sum / mean_radius(mesh);
 }
 
-std::vector<std::vector<int>> segmentation_cuts(const Indexed_mesh& mesh, const std::vector<int>& labels)
+std::vector<Segmentation_cut> segmentation_cuts(const Indexed_mesh& mesh, const std::vector<int>& labels)
 {
   check_sizes(mesh, labels, labels);
   // Union-find over the vertices of the cut edges of each label pair.
+  const std::map<Edge, std::pair<int, int>> edges = cut_edges(mesh, labels);
   std::map<std::pair<int, int>, std::map<int, int>> parent;
-  std::function<int(std::map<int, int>&, int)> root = [&](std::map<int, int>& p, int v) {
+  const auto root = [](std::map<int, int>& p, int v) {
     while(p[v] != v) v = p[v] = p[p[v]];
     return v;
   };
-  for(const auto& [edge, pair] : cut_edges(mesh, labels)) {
+  for(const auto& [edge, pair] : edges) {
     std::map<int, int>& p = parent[pair];
     for(int v : {edge.first, edge.second}) p.emplace(v, v);
     p[root(p, edge.first)] = root(p, edge.second);
   }
-  std::vector<std::vector<int>> cuts;
+  std::vector<Segmentation_cut> cuts;
   for(auto& [pair, p] : parent) {
-    std::map<int, std::vector<int>> members;
-    for(const auto& entry : p) members[root(p, entry.first)].push_back(entry.first);
-    for(auto& entry : members) cuts.push_back(std::move(entry.second));
+    std::map<int, std::size_t> cut_of_root;
+    for(const auto& entry : p) {
+      const auto [it, added] = cut_of_root.emplace(root(p, entry.first), cuts.size());
+      if(added) cuts.push_back({pair.first, pair.second, {}, 0});
+      cuts[it->second].vertices.push_back(entry.first);
+    }
+    for(const auto& [edge, edge_pair] : edges)
+      if(edge_pair == pair) ++cuts[cut_of_root.at(root(p, edge.first))].edges;
   }
   return cuts;
 }

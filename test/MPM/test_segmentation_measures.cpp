@@ -123,15 +123,18 @@ TEST(Segmentation_measures, CutsAreTheSeamsBetweenLabelPairs)
 {
   const Indexed_mesh m = strip();
   // Three segments: cuts at x = 1 (labels 0 | 1) and x = 3 (labels 1 | 2).
-  const std::vector<std::vector<int>> cuts = segmentation_cuts(m, {0, 0, 1, 1, 1, 1, 2, 2});
+  const std::vector<Segmentation_cut> cuts = segmentation_cuts(m, {0, 0, 1, 1, 1, 1, 2, 2});
   ASSERT_EQ(cuts.size(), 2u);
-  EXPECT_EQ(cuts[0], (std::vector<int>{2, 3}));
-  EXPECT_EQ(cuts[1], (std::vector<int>{6, 7}));
+  EXPECT_EQ(cuts[0].vertices, (std::vector<int>{2, 3}));
+  EXPECT_EQ(cuts[1].vertices, (std::vector<int>{6, 7}));
+  EXPECT_EQ(cuts[1].first_label, 1);
+  EXPECT_EQ(cuts[1].second_label, 2);
+  EXPECT_EQ(cuts[0].edges, 1); // an open stretch from border to border
   // Both vertices are 1/2 from the centroid (1, 1/2); the first is kept.
-  EXPECT_EQ(central_cut_vertex(m, cuts[0]), 2);
+  EXPECT_EQ(central_cut_vertex(m, cuts[0].vertices), 2);
   // From the cut x = 1 to the cut x = 3: 2; from (3, 0) and (3, 1) to (3, 0) alone: 1/2.
-  EXPECT_DOUBLE_EQ(cut_distance(m, cuts[0], cuts[1]), 2.);
-  EXPECT_DOUBLE_EQ(cut_distance(m, cuts[1], {6}), 0.5);
+  EXPECT_DOUBLE_EQ(cut_distance(m, cuts[0].vertices, cuts[1].vertices), 2.);
+  EXPECT_DOUBLE_EQ(cut_distance(m, cuts[1].vertices, {6}), 0.5);
 }
 
 } // namespace

@@ -74,14 +74,24 @@ Consistency_error consistency_error(const Indexed_mesh& mesh, const std::vector<
                                     const std::vector<int>& reference);
 
 /// \ingroup PkgMPMRef
-/// The cuts of a segmentation: each connected set of edges between faces of
-/// the same two labels (a seam loop around a limb, or one stretch of the
-/// border between two parts), as its vertices in increasing order. Ordered
-/// by label pair. Throws `Input_error` when `labels` has not one entry per face.
-std::vector<std::vector<int>> segmentation_cuts(const Indexed_mesh& mesh, const std::vector<int>& labels);
+/// One cut of a segmentation: a connected set of edges between faces of the
+/// same two labels.
+struct Segmentation_cut
+{
+  int first_label = 0;       ///< the smaller of the two labels
+  int second_label = 0;      ///< the larger one
+  std::vector<int> vertices; ///< its vertices, in increasing order
+  int edges = 0;             ///< its edges: as many as vertices for a closed loop, one fewer for an open stretch
+};
 
 /// \ingroup PkgMPMRef
-/// The vertex of `cut` (a vertex set, as from `segmentation_cuts()`) nearest
+/// The cuts of a segmentation (a seam loop around a limb, or one stretch of
+/// the border between two parts where a part touches several others), ordered
+/// by label pair. Throws `Input_error` when `labels` has not one entry per face.
+std::vector<Segmentation_cut> segmentation_cuts(const Indexed_mesh& mesh, const std::vector<int>& labels);
+
+/// \ingroup PkgMPMRef
+/// The vertex of `cut` (a vertex set, such as `Segmentation_cut::vertices`) nearest
 /// its centroid: where a user would click to name that cut. `cut` must not be empty.
 int central_cut_vertex(const Indexed_mesh& mesh, const std::vector<int>& cut);
 
