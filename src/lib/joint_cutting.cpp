@@ -29,7 +29,7 @@ std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
 // and the limb's radius there.
 struct Limb_axis
 {
-  Vector point, direction;
+  Vector point = Vector::Zero(), direction = Vector::UnitZ();
   double radius = 0.;
 };
 
@@ -43,7 +43,7 @@ struct Section
   double weighted = 0.; // crease-weighted length: lower for a narrow section along a concave crease
   double off_axis = 0.; // distance of the centre from the axis point
   Limb_axis axis;       // the limb it goes around
-  double shift = 0.;
+  double shift = 0.;    // how far its plane was moved along the axis from the click
 };
 
 class Joint_finder
