@@ -36,7 +36,12 @@ Edge_graph_paths edge_graph_shortest_paths(int n, const std::vector<Cluster_edge
   Edge_graph_paths paths;
   paths.distance.assign(std::size_t(n) + 1, std::numeric_limits<double>::infinity());
   std::vector<std::size_t> predecessor(std::size_t(n) + 1);
-  boost::dijkstra_shortest_paths(g, n, boost::distance_map(paths.distance.data()).predecessor_map(predecessor.data()));
+  // Boost's default "unreached" distance is the largest finite double, which
+  // std::isfinite() takes for a reached vertex: ask for +infinity.
+  boost::dijkstra_shortest_paths(g, n,
+                                 boost::distance_map(paths.distance.data())
+                                   .predecessor_map(predecessor.data())
+                                   .distance_inf(std::numeric_limits<double>::infinity()));
   paths.distance.pop_back();
   paths.predecessor.resize(std::size_t(n));
   for(int v = 0; v < n; ++v) {

@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Mesh_cutting.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/internal/Crease_weights.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 #include <CGAL/MPM/internal/Vertex_components.h>
@@ -34,46 +35,6 @@ std::string cut_name(const Cut_specification& spec, std::size_t i)
 
 Eigen::Vector3d position(const Indexed_mesh& m, vertex_descriptor v) { return m.points.row(int(v)).transpose(); }
 
-// Edge weights: length / (1 + w * concave bending angle / mean absolute
-// bending angle). Measuring angles against the mesh's own mean makes the
-// weight mean the same on coarse and fine triangulations.
-std::vector<double> edge_weights(const Mesh& mesh, const Indexed_mesh& m, double feature_weight)
-{
-  // Concave means folding towards the outside: for a closed mesh the sign
-  // of the enclosed volume says which side that is; an open mesh has no
-  // inside, so its normals point out.
-  double volume = 0.;
-  for(const Triangle& t : m.triangles)
-    volume += m.points.row(t[0]).dot(m.points.row(t[1]).cross(m.points.row(t[2])));
-  const bool closed = std::none_of(mesh.edges().begin(), mesh.edges().end(),
-                                   [&](edge_descriptor e) { return mesh.is_border(e); });
-  const double outside = closed && volume < 0 ? -1. : 1.;
-
-  std::vector<double> bend(mesh.number_of_edges(), 0.), length(mesh.number_of_edges(), 0.);
-  std::vector<bool> concave(mesh.number_of_edges(), false);
-  double sum = 0.;
-  int interior = 0;
-  for(edge_descriptor e : mesh.edges()) {
-    const auto h = mesh.halfedge(e), o = mesh.opposite(h);
-    const Eigen::Vector3d a = position(m, mesh.source(h)), b = position(m, mesh.target(h));
-    length[e] = (b - a).norm();
-    if(mesh.is_border(e)) continue;
-    const Eigen::Vector3d c = position(m, mesh.target(mesh.next(h))), d = position(m, mesh.target(mesh.next(o)));
-    const Eigen::Vector3d n1 = (b - a).cross(c - a).normalized(), n2 = (a - b).cross(d - b).normalized();
-    bend[e] = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
-    concave[e] = outside * (d - a).dot(n1) > 0;
-    sum += bend[e];
-    ++interior;
-  }
-  const double mean = interior > 0 ? sum / interior : 0.;
-  std::vector<double> weight(mesh.number_of_edges());
-  for(std::size_t e = 0; e < weight.size(); ++e) {
-    const double feature = concave[e] && mean > 0 ? bend[e] / mean : 0.;
-    weight[e] = length[e] / (1. + feature_weight * feature);
-  }
-  return weight;
-}
-
 class Cutter
 {
 public:
@@ -84,7 +45,7 @@ public:
       // angles) and is what CGAL's connected_components walks.
       mesh_(internal::to_surface_mesh(m, mesh_source, "cutting"))
   {
-    weight_ = edge_weights(mesh_, m_, options.feature_weight);
+    weight_ = internal::crease_edge_weights(mesh_, m_, options.feature_weight);
     for(edge_descriptor e : mesh_.edges())
       edges_.push_back({int(mesh_.vertex(e, 0)), int(mesh_.vertex(e, 1)), false});
     component_ = internal::vertex_component_labels(m_);
@@ -282,6 +243,50 @@ Cutting_result cut_mesh(const Indexed_mesh& mesh, const Cut_specification& spec,
     result.mesh.face_labels[f] = label_of_region[region_of_face[f]];
   return result;
 }
+
+namespace internal {
+
+// Edge weights: length / (1 + w * concave bending angle / mean absolute
+// bending angle). Measuring angles against the mesh's own mean makes the
+// weight mean the same on coarse and fine triangulations.
+std::vector<double> crease_edge_weights(const Indexed_surface_mesh& mesh, const Indexed_mesh& m, double feature_weight)
+{
+  // Concave means folding towards the outside: for a closed mesh the sign
+  // of the enclosed volume says which side that is; an open mesh has no
+  // inside, so its normals point out.
+  double volume = 0.;
+  for(const Triangle& t : m.triangles)
+    volume += m.points.row(t[0]).dot(m.points.row(t[1]).cross(m.points.row(t[2])));
+  const bool closed = std::none_of(mesh.edges().begin(), mesh.edges().end(),
+                                   [&](edge_descriptor e) { return mesh.is_border(e); });
+  const double outside = closed && volume < 0 ? -1. : 1.;
+
+  std::vector<double> bend(mesh.number_of_edges(), 0.), length(mesh.number_of_edges(), 0.);
+  std::vector<bool> concave(mesh.number_of_edges(), false);
+  double sum = 0.;
+  int interior = 0;
+  for(edge_descriptor e : mesh.edges()) {
+    const auto h = mesh.halfedge(e), o = mesh.opposite(h);
+    const Eigen::Vector3d a = position(m, mesh.source(h)), b = position(m, mesh.target(h));
+    length[e] = (b - a).norm();
+    if(mesh.is_border(e)) continue;
+    const Eigen::Vector3d c = position(m, mesh.target(mesh.next(h))), d = position(m, mesh.target(mesh.next(o)));
+    const Eigen::Vector3d n1 = (b - a).cross(c - a).normalized(), n2 = (a - b).cross(d - b).normalized();
+    bend[e] = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+    concave[e] = outside * (d - a).dot(n1) > 0;
+    sum += bend[e];
+    ++interior;
+  }
+  const double mean = interior > 0 ? sum / interior : 0.;
+  std::vector<double> weight(mesh.number_of_edges());
+  for(std::size_t e = 0; e < weight.size(); ++e) {
+    const double feature = concave[e] && mean > 0 ? bend[e] / mean : 0.;
+    weight[e] = length[e] / (1. + feature_weight * feature);
+  }
+  return weight;
+}
+
+} // namespace internal
 
 } // namespace MPM
 } // namespace CGAL

@@ -3,13 +3,16 @@
 //
 // `mpm cut MESH --cuts CUTS -o PREFIX`: cuts a mesh along cutting lines
 // (shortest paths between a few user vertices) and writes the mesh with
-// one part label per face, ready for `mpm learn`.
+// one part label per face, ready for `mpm learn`. `mpm cut MESH --at V ...`
+// finds the cut around the limb at each clicked vertex instead.
 #include "cli.h"
 
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Joint_cutting.h>
 #include <CGAL/MPM/Mesh_cutting.h>
 #include <CGAL/MPM/Mesh_io.h>
 
+#include <climits>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -32,12 +35,69 @@ void require_triangles(const CGAL::MPM::Mesh_file& file, const std::string& path
                                      " corners; 'mpm cut' needs a triangle mesh (triangulate it first)");
 }
 
+struct Written_cut_mesh
+{
+  std::string mesh_file, seg_file;
+  std::map<int, int> faces_of_label;
+};
+
+// Writes PREFIX.off and PREFIX.seg; returns their names and the parts' sizes.
+Written_cut_mesh write_cut_mesh(const CGAL::MPM::Labeled_mesh& mesh, const std::string& prefix, Context& context)
+{
+  context.progress.update("writing files", 0.8);
+  Written_cut_mesh w{prefix + ".off", prefix + ".seg", {}};
+  ensure_parent_directory(w.mesh_file);
+  CGAL::MPM::write_mesh_file(mesh.mesh, w.mesh_file, nullptr, context.meshes);
+  CGAL::MPM::write_seg_file(mesh.face_labels, w.seg_file);
+  context.progress.done();
+  for(int label : mesh.face_labels) ++w.faces_of_label[label];
+  return w;
+}
+
+// `--at V ...`: one cut per clicked vertex, found from the curve skeleton.
+int run_cut_at(const Args& args, Context& context, const CGAL::MPM::Mesh_file& file, const std::string& mesh_path,
+               const std::string& prefix)
+{
+  using namespace CGAL::MPM;
+  std::vector<int> clicks;
+  for(const Arg_item& item : args.items)
+    if(item.option == "at") clicks.push_back(std::stoi(item.value));
+  Joint_cutting_options options;
+  options.feature_weight = args.real("feature-weight", options.feature_weight);
+  options.search_range = args.real("search-range", options.search_range);
+  context.progress.update("skeleton and sections", 0.2);
+  const Joint_cutting_result result = cut_at_vertices(file.mesh, clicks, options, mesh_path);
+  const auto [mesh_file, seg_file, faces_of_label] = write_cut_mesh(result.mesh, prefix, context);
+  Json cuts = Json::array();
+  for(const Joint_cut& c : result.cuts)
+    cuts.push_back({{"vertex", c.vertex}, {"length", c.length}, {"edges", c.path.size() - 1},
+                    {"limb_radius", c.limb_radius}, {"shift", c.shift},
+                    {"centre", {c.centre.x(), c.centre.y(), c.centre.z()}}, {"path", c.path}});
+  if(context.json) {
+    print_json({{"mesh", mesh_path}, {"vertices", file.mesh.number_of_vertices()},
+                {"faces", file.mesh.number_of_faces()}, {"parts", faces_of_label.size()}, {"cuts", cuts},
+                {"files", {{"mesh", mesh_file}, {"labels", seg_file}}}});
+    return exit_ok;
+  }
+  std::cout << "Cut " << mesh_path << " (" << file.mesh.number_of_vertices() << " vertices) at " << clicks.size()
+            << " clicked vert" << (clicks.size() == 1 ? "ex" : "ices") << " into " << faces_of_label.size()
+            << " parts\n\n";
+  Table table({"vertex", "length", "edges", "limb radius", "moved", "centre"}, {true, true, true, true, true, false});
+  for(const Joint_cut& c : result.cuts)
+    table.add_row({std::to_string(c.vertex), format_number(c.length), std::to_string(c.path.size() - 1),
+                   format_number(c.limb_radius), format_number(c.shift) + " along the limb",
+                   format_number(c.centre.x()) + " " + format_number(c.centre.y()) + " " + format_number(c.centre.z())});
+  table.print(std::cout);
+  std::cout << "\nWrote " << mesh_file << ", " << seg_file << "\n";
+  return exit_ok;
+}
+
 int run_cut(const Args& args, Context& context)
 {
   using namespace CGAL::MPM;
-  if(!args.has("cuts")) throw Usage_error("'mpm cut' needs --cuts CUTS");
+  if(args.has("cuts") == args.has("at")) throw Usage_error("'mpm cut' needs either --cuts CUTS or --at V");
   if(!args.has("output")) throw Usage_error("'mpm cut' needs -o PREFIX");
-  const std::string mesh_path = args.positionals().front(), cuts_path = args.text("cuts");
+  const std::string mesh_path = args.positionals().front();
   std::string prefix = args.text("output");
   for(const char* extension : {".off", ".seg"})
     if(prefix.size() > 4 && prefix.compare(prefix.size() - 4, 4, extension) == 0) prefix.resize(prefix.size() - 4);
@@ -45,6 +105,8 @@ int run_cut(const Args& args, Context& context)
   context.progress.update("reading " + mesh_path, 0.);
   const Mesh_file file = read_mesh_file(mesh_path);
   require_triangles(file, mesh_path);
+  if(args.has("at")) return run_cut_at(args, context, file, mesh_path, prefix);
+  const std::string cuts_path = args.text("cuts");
   const Cut_specification spec = read_cut_specification(cuts_path);
   Cutting_options options;
   options.feature_weight = args.real("feature-weight", options.feature_weight);
@@ -53,15 +115,7 @@ int run_cut(const Args& args, Context& context)
   context.progress.update("cutting", 0.3);
   const Cutting_result result = cut_mesh(file.mesh, spec, options, mesh_path);
 
-  context.progress.update("writing files", 0.8);
-  const std::string mesh_file = prefix + ".off", seg_file = prefix + ".seg";
-  ensure_parent_directory(mesh_file);
-  write_mesh_file(result.mesh.mesh, mesh_file, nullptr, context.meshes);
-  write_seg_file(result.mesh.face_labels, seg_file);
-  context.progress.done();
-
-  std::map<int, int> faces_of_label;
-  for(int label : result.mesh.face_labels) ++faces_of_label[label];
+  const auto [mesh_file, seg_file, faces_of_label] = write_cut_mesh(result.mesh, prefix, context);
   Json parts = Json::array();
   for(const auto& [label, faces] : faces_of_label) {
     Json seed = nullptr;
@@ -117,19 +171,27 @@ Command make_cut_command()
 {
   Command c;
   c.name = "cut";
-  c.summary = "cut a mesh into labelled parts along cutting lines";
-  c.synopsis = "MESH --cuts CUTS [--feature-weight W] [--open] -o PREFIX";
+  c.summary = "cut a mesh into labelled parts along cutting lines or at clicked joints";
+  c.synopsis = "MESH (--cuts CUTS | --at V [--at V ...]) [--feature-weight W] [--open] [--search-range R] -o PREFIX";
   c.operand = "MESH";
   c.description =
     "MESH is a triangle mesh (OFF, OBJ, PLY or STL). CUTS is a cut file (JSON, see\n"
     "doc/MPM/File_formats.md): per cut a few vertices in order, joined by shortest\n"
     "paths along mesh edges that prefer concave creases; optional seeds name the\n"
-    "labels of the regions. Writes PREFIX.off (the geometry, unchanged) and\n"
-    "PREFIX.seg (one part label per face), the input 'mpm learn' reads.";
+    "labels of the regions. With --at instead, each given vertex is one click per\n"
+    "joint: the cut is the closed loop around the limb there (the limb's axis from\n"
+    "the curve skeleton, the section across it through V, traced like a cut line so\n"
+    "that it settles in the crease); the mesh must be closed and connected. Writes\n"
+    "PREFIX.off (the geometry, unchanged) and PREFIX.seg (one part label per face),\n"
+    "the input 'mpm learn' reads.";
   c.min_positionals = c.max_positionals = 1;
   c.options = {
     {"output", 'o', Value_kind::output_prefix, "PREFIX", "", "output prefix (required; a trailing .off or .seg is dropped)"},
-    {"cuts", 0, Value_kind::input_file, "CUTS", "", "cut file (required)"},
+    {"cuts", 0, Value_kind::input_file, "CUTS", "", "cut file (this or --at is required)"},
+    {"at", 0, Value_kind::integer, "V", "", "a vertex next to a joint: cut around the limb there (repeat per joint)", 0,
+     INT_MAX, false, true},
+    {"search-range", 0, Value_kind::real, "R", "0.5",
+     "with --at: how far, in limb radii, to look for a small section when the one at V runs into the body", 0, HUGE_VAL},
     {"feature-weight", 0, Value_kind::real, "W", "1",
      "how strongly cuts snap to concave creases; 0 = shortest edge paths", 0, HUGE_VAL},
     {"open", 0, Value_kind::flag, "", "closed loops",

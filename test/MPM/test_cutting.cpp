@@ -9,6 +9,7 @@
 #include <CGAL/MPM/Mesh_cutting.h>
 #include <CGAL/MPM/Mesh_io.h>
 #include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/internal/Edge_graph_distance.h>
 
 #include "Io_test_support.h"
 #include "Tool_test_support.h"
@@ -394,6 +395,19 @@ TEST(Mesh_cutting, CommandWritesWhatLearnReads)
     << quad.err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("quad_out.seg")));
   EXPECT_EQ(mpm_test::run_tool(dir.path(), "cut " + dir.file("hand.off") + " -o " + dir.file("x")).status, 2);
+}
+
+// Unreached vertices must read as +infinity: Boost's default, the largest
+// finite double, passed std::isfinite() and sent the cut tracer round a
+// predecessor chain that never reached its source (a hang, then out of memory).
+TEST(Mesh_cutting, UnreachedVerticesAreAtInfiniteDistance)
+{
+  const std::vector<Cluster_edge> edges = {{0, 1, false}, {2, 3, false}};
+  const internal::Edge_graph_paths paths = internal::edge_graph_shortest_paths(4, edges, {1., 1.}, {0});
+  EXPECT_DOUBLE_EQ(paths.distance[1], 1.);
+  EXPECT_TRUE(std::isinf(paths.distance[2]));
+  EXPECT_EQ(paths.predecessor[2], -1);
+  EXPECT_EQ(paths.predecessor[1], 0);
 }
 
 } // namespace

@@ -1,0 +1,105 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// quality_segmentation (issue 20): one click per human cut. For each
+// segmented mesh of a directory, clicks the vertex of each human cut nearest
+// the cut's centroid, runs cut_at_vertices() and compares the result with the
+// human segmentation: cuts found, distance of each found cut to its human
+// cut, and the Princeton Segmentation Benchmark's four measures.
+#include "quality_common.h"
+
+#include <CGAL/MPM/Joint_cutting.h>
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Segmentation_measures.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+
+namespace {
+
+using namespace CGAL::MPM;
+namespace fs = std::filesystem;
+
+// The human cuts a user would click: the closed seam loops, and, where a
+// part's seam runs along several neighbours (a phalanx touching the next
+// finger), the longest open stretch of at least one of its two parts; the
+// short stretches between touching neighbours are no joints.
+std::vector<Segmentation_cut> joint_cuts(const std::vector<Segmentation_cut>& cuts)
+{
+  std::map<int, std::size_t> longest_open;
+  for(const Segmentation_cut& c : cuts)
+    if(c.edges < int(c.vertices.size()))
+      for(int label : {c.first_label, c.second_label})
+        longest_open[label] = std::max(longest_open[label], c.vertices.size());
+  std::vector<Segmentation_cut> joints;
+  for(const Segmentation_cut& c : cuts)
+    if(c.edges == int(c.vertices.size()) || longest_open[c.first_label] == c.vertices.size() ||
+       longest_open[c.second_label] == c.vertices.size())
+      joints.push_back(c);
+  return joints;
+}
+
+void evaluate(const std::string& name, const std::string& base, double search_range)
+{
+  const Labeled_mesh human = read_labeled_mesh(base + ".off", base + ".seg");
+  const Indexed_mesh& m = human.mesh;
+  const std::vector<Segmentation_cut> cuts = joint_cuts(segmentation_cuts(m, human.face_labels));
+  std::vector<int> clicks;
+  for(const Segmentation_cut& cut : cuts) clicks.push_back(central_cut_vertex(m, cut.vertices));
+  Joint_cutting_options options;
+  options.skip_unfound = true;
+  options.search_range = search_range;
+  const auto start = std::chrono::steady_clock::now();
+  const Joint_cutting_result result = cut_at_vertices(m, clicks, options, base + ".off");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const double diagonal = (m.points.colwise().maxCoeff() - m.points.colwise().minCoeff()).norm();
+  double sum = 0., worst = 0.;
+  int within = 0;
+  for(const Joint_cut& c : result.cuts) {
+    const std::size_t i = std::size_t(std::find(clicks.begin(), clicks.end(), c.vertex) - clicks.begin());
+    const double d = cut_distance(m, c.path, cuts[i].vertices) / diagonal;
+    sum += d;
+    worst = std::max(worst, d);
+    within += d < 0.01;
+  }
+  const Segmentation_comparison s = compare_segmentations(m, result.mesh.face_labels, human.face_labels);
+  const double mean = result.cuts.empty() ? 0. : sum / double(result.cuts.size());
+  std::cout << "| " << name << " | " << result.cuts.size() << " / " << cuts.size() << " | " << within << " | "
+            << std::fixed << std::setprecision(2) << 100. * mean << " | " << 100. * worst << " | "
+            << std::setprecision(3) << s.rand_index_error << " | " << s.cut_discrepancy << " | " << s.hamming.average
+            << " | " << s.hamming.missing << " | " << s.hamming.false_alarm << " | " << s.consistency.global << " | "
+            << s.consistency.local << " | " << std::setprecision(1) << seconds << " |\n"
+            << std::flush;
+  for(const Skipped_click& k : result.skipped) std::cerr << name << ": " << k.reason << "\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const mpm_quality::Options options(
+    argc, argv, {{"data", "../shared/data/psb"}, {"meshes", ""}, {"search-range", "0.5"}},
+    "usage: quality_segmentation [--data DIR] [--meshes a,b,...] [--search-range R]\n"
+    "For every DIR/NAME.off with DIR/NAME.seg, clicks one vertex per human cut, cuts with\n"
+    "cut_at_vertices() and prints a Markdown table against the human segmentation.\n");
+  std::vector<std::string> names = options.list("meshes");
+  if(names.empty())
+    for(const auto& entry : fs::directory_iterator(options.text("data")))
+      if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  std::cout << "| mesh | cuts found / human | within 1% | mean distance, % diagonal | worst, % | Rand Index error | "
+               "Cut Discrepancy | Hamming | Rm | Rf | GCE | LCE | seconds |\n"
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  const double search_range = std::atof(options.text("search-range").c_str());
+  for(const std::string& name : names) {
+    try {
+      evaluate(name, options.text("data") + "/" + name, search_range);
+    } catch(const std::exception& error) {
+      std::cout << "| " << name << " | failed: " << error.what() << " |\n" << std::flush;
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,102 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_JOINT_CUTTING_H
+#define CGAL_MPM_JOINT_CUTTING_H
+
+#include <CGAL/MPM/Indexed_mesh.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+
+/// \ingroup PkgMPMRef
+/// Options of `cut_at_vertices()`.
+struct Joint_cutting_options
+{
+  /// Strength of the crease term of the final geodesic loop, as
+  /// `Cutting_options::feature_weight`. Must be finite and >= 0.
+  double feature_weight = 1.;
+  /// When the section through the clicked vertex is not a small loop around
+  /// the limb (it runs into the body or a neighbouring limb), how far, in
+  /// limb radii, to look along the limb (and tilted by up to 40 degrees) for
+  /// the narrowest, most concave small section instead; 0: never. Must be
+  /// finite and >= 0.
+  double search_range = 0.5;
+  /// Vertices of the section kept as the cut's points; the feature-weighted
+  /// shortest paths between them form the loop. At least 3.
+  int anchors = 6;
+  /// A section with fewer distinct vertices means the mesh is too coarse
+  /// to cut there. At least 3.
+  int minimum_section_vertices = 6;
+  /// Leave out a vertex whose cut cannot be found (on the body, too coarse
+  /// there, a joint already clicked) and report it in
+  /// `Joint_cutting_result::skipped` instead of throwing, so that one bad
+  /// click among many does not lose the others.
+  bool skip_unfound = false;
+};
+
+/// \ingroup PkgMPMRef
+/// A clicked vertex left out by `Joint_cutting_options::skip_unfound`.
+struct Skipped_click
+{
+  int vertex = -1;    ///< the clicked vertex
+  std::string reason; ///< the message the error would have had
+};
+
+/// \ingroup PkgMPMRef
+/// One cut found from one clicked vertex.
+struct Joint_cut
+{
+  int vertex = -1;              ///< the clicked vertex
+  std::vector<int> path;        ///< closed vertex path of the cut (ends with its first vertex)
+  double length = 0.;           ///< Euclidean length of `path`
+  double limb_radius = 0.;      ///< mean distance of the limb's surface from its axis there
+  double shift = 0.; ///< how far the chosen section moved along the limb (see `Joint_cutting_options::search_range`)
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< centroid of the path's vertices
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();   ///< unit direction of the limb (sign arbitrary)
+};
+
+/// \ingroup PkgMPMRef
+/// The mesh labelled by the cuts, and the cuts.
+struct Joint_cutting_result
+{
+  Labeled_mesh mesh;          ///< input geometry, one label per face (regions numbered by their first face)
+  std::vector<Joint_cut> cuts; ///< one per clicked vertex found, in the given order
+  std::vector<Skipped_click> skipped; ///< clicks left out (only with `Joint_cutting_options::skip_unfound`)
+};
+
+/// \ingroup PkgMPMRef
+/// One click per joint: for each of `vertices`, finds the closed cut around
+/// the limb through or next to it and labels the regions the cuts separate.
+/// The limb's axis comes from CGAL's mean curvature flow curve skeleton: the
+/// skeleton edges near the node the vertex contracted to whose limb surface
+/// the vertex lies on (its distance to the edge within half the limb's
+/// radius of that radius). The cut starts as the narrowest section of the
+/// mesh through the vertex across one of these axes (the plane perpendicular
+/// to it or tilted by up to 20 degrees) that is a small loop around the axis,
+/// or a nearby one (see `Joint_cutting_options::search_range`), and snaps to
+/// the crease as the feature-weighted geodesic loop of `cut_mesh()` through
+/// `Joint_cutting_options::anchors` of its vertices.
+///
+/// Throws `Input_error` naming the vertex for: a vertex out of range or in
+/// no face; a vertex on the body (no limb axis passes under it); a section
+/// that is not a small closed loop around the axis, nor any within the search
+/// range; a section with fewer than `minimum_section_vertices` vertices (a
+/// mesh too coarse there); a section whose points cannot be joined in order
+/// by `cut_mesh()`; two vertices on one joint (the centres of their sections
+/// lie within a limb radius). Also for a mesh with holes or several
+/// components, and as `cut_mesh()` when the cuts together do not separate the
+/// mesh. The curve skeleton, and so a few cuts, can vary from run to run:
+/// CGAL's skeletonization depends on where its mesh lies in memory.
+Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices,
+                                     const Joint_cutting_options& options = Joint_cutting_options(),
+                                     const std::string& mesh_source = "mesh");
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,238 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One click per joint: on the synthetic hand with its labels removed, one
+// click next to each true seam finds a cut close to it and gives the true
+// parts back; bad clicks and bad meshes are Input_errors naming the vertex.
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Joint_cutting.h>
+#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Segmentation_measures.h>
+#include <CGAL/MPM/Synthetic_model.h>
+
+#include "Io_test_support.h"
+#include "Learned_models.h"
+#include "Tool_test_support.h"
+#include "Tube_mesh.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+
+namespace {
+
+using namespace CGAL::MPM;
+
+const Synthetic_model& small_hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth; }
+
+double mean_edge_length(const Indexed_mesh& m)
+{
+  double sum = 0.;
+  for(const Triangle& t : m.triangles)
+    for(int k = 0; k < 3; ++k) sum += (m.points.row(t[k]) - m.points.row(t[(k + 1) % 3])).norm();
+  return sum / (3. * double(m.triangles.size()));
+}
+
+// A neighbour of the cut vertex nearest the cut's centroid that is not on
+// the cut: a click next to the joint, as a user would make it.
+int click_next_to(const Indexed_mesh& m, const std::vector<int>& cut)
+{
+  const int on = central_cut_vertex(m, cut);
+  const std::set<int> on_cut(cut.begin(), cut.end());
+  for(const Triangle& t : m.triangles)
+    if(std::find(t.begin(), t.end(), on) != t.end())
+      for(int v : t)
+        if(on_cut.count(v) == 0) return v;
+  return on;
+}
+
+std::string error_of(const Indexed_mesh& m, const std::vector<int>& clicks)
+{
+  try {
+    cut_at_vertices(m, clicks, Joint_cutting_options(), "mesh.off");
+  } catch(const Input_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The seams between two finger segments. The knuckles, where a finger meets
+// the palm, are left out: on this hand the section through a click there
+// also crosses the palm and the skeleton near the palm has no clean finger
+// axis, so the cut found lies several edges off (a known limitation, see
+// doc/MPM/Cutting.md).
+std::vector<std::vector<int>> finger_joints(const Synthetic_model& hand)
+{
+  std::map<int, std::string> type;
+  for(const Synthetic_instance& i : hand.instances) type[i.label] = i.type;
+  std::vector<std::vector<int>> joints;
+  for(const Segmentation_cut& seam : segmentation_cuts(hand.mesh.mesh, hand.mesh.face_labels))
+    if(type[seam.first_label] != "palm" && type[seam.second_label] != "palm") joints.push_back(seam.vertices);
+  return joints;
+}
+
+TEST(Joint_cutting, OneClickPerJointFindsTheFingerJoints)
+{
+  const Synthetic_model& hand = small_hand();
+  const Indexed_mesh& m = hand.mesh.mesh;
+  const std::vector<std::vector<int>> joints = finger_joints(hand);
+  ASSERT_EQ(joints.size(), 10u);
+  std::vector<int> clicks;
+  for(const std::vector<int>& joint : joints) clicks.push_back(click_next_to(m, joint));
+
+  const Joint_cutting_result result = cut_at_vertices(m, clicks, Joint_cutting_options(), "hand");
+  ASSERT_EQ(result.cuts.size(), joints.size());
+  EXPECT_TRUE(result.skipped.empty());
+  const double edge = mean_edge_length(m);
+  for(std::size_t i = 0; i < joints.size(); ++i) {
+    const Joint_cut& c = result.cuts[i];
+    EXPECT_EQ(c.vertex, clicks[i]);
+    EXPECT_EQ(c.path.front(), c.path.back());
+    EXPECT_GT(c.length, 0.);
+    // Within about one edge of the true seam (an edge is about 1.5% of the
+    // diagonal of this 3k-vertex hand).
+    EXPECT_LT(cut_distance(m, c.path, joints[i]), 1.2 * edge) << "cut at vertex " << clicks[i];
+  }
+  // The palm with the five proximal segments, and ten more segments.
+  std::set<int> labels(result.mesh.face_labels.begin(), result.mesh.face_labels.end());
+  EXPECT_EQ(labels.size(), 11u);
+}
+
+TEST(Joint_cutting, BadClicksNameTheVertex)
+{
+  const Synthetic_model& hand = small_hand();
+  const Indexed_mesh& m = hand.mesh.mesh;
+  const std::vector<int> seam = segmentation_cuts(m, hand.mesh.face_labels).front().vertices;
+  const int a = click_next_to(m, seam);
+  // Two clicks on one joint: next to the seam and on it.
+  const std::string twice = error_of(m, {a, seam.front()});
+  EXPECT_NE(twice.find("same joint"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("vertex " + std::to_string(a)), std::string::npos) << twice;
+
+  const std::string out = error_of(m, {m.number_of_vertices()});
+  EXPECT_NE(out.find("out of range"), std::string::npos) << out;
+
+  // Vertex 0 is on the palm, away from every finger.
+  const auto face = std::find_if(m.triangles.begin(), m.triangles.end(),
+                                 [](const Triangle& t) { return std::find(t.begin(), t.end(), 0) != t.end(); });
+  const int label = hand.mesh.face_labels[std::size_t(face - m.triangles.begin())];
+  for(const Synthetic_instance& i : hand.instances)
+    if(i.label == label) ASSERT_EQ(i.type, "palm");
+  const std::string body = error_of(m, {0});
+  EXPECT_NE(body.find("vertex 0: is on the body"), std::string::npos) << body;
+}
+
+TEST(Joint_cutting, BadMeshesAreInputErrors)
+{
+  const Synthetic_model& hand = small_hand();
+  Indexed_mesh holed = hand.mesh.mesh;
+  holed.triangles.pop_back();
+  const std::string hole = error_of(holed, {0});
+  EXPECT_NE(hole.find("hole"), std::string::npos) << hole;
+
+  Indexed_mesh two = hand.mesh.mesh;
+  const int n = two.number_of_vertices();
+  two.points.conservativeResize(2 * n, 3);
+  two.points.bottomRows(n) = hand.mesh.mesh.points.rowwise() + Eigen::RowVector3d(100., 0., 0.);
+  for(const Triangle& t : hand.mesh.mesh.triangles) two.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  const std::string components = error_of(two, {0});
+  EXPECT_NE(components.find("2 connected components"), std::string::npos) << components;
+
+  // A square tube closed by two apexes: four vertices around.
+  Indexed_mesh tube;
+  const int rings = 12, sides = 4;
+  tube.points = mpm_test::bent_tube(rings, sides, 10., 1., 0.);
+  tube.triangles = mpm_test::tube_triangles(rings, sides);
+  const int bottom = rings * sides, top = bottom + 1;
+  tube.points.conservativeResize(top + 1, 3);
+  tube.points.row(bottom) << 0., 0., -1.;
+  tube.points.row(top) << 0., 0., 11.;
+  for(int s = 0; s < sides; ++s) {
+    tube.triangles.push_back({bottom, (s + 1) % sides, s});
+    tube.triangles.push_back({top, (rings - 1) * sides + s, (rings - 1) * sides + (s + 1) % sides});
+  }
+  const std::string coarse = error_of(tube, {5 * sides});
+  EXPECT_NE(coarse.find("too coarse"), std::string::npos) << coarse;
+}
+
+TEST(Joint_cutting, CommandWritesLabelsAndNamesBadClicks)
+{
+  const mpm_test::Scratch_directory dir;
+  const Synthetic_model& hand = small_hand();
+  write_mesh_file(hand.mesh.mesh, dir.file("hand.off"));
+  const std::vector<std::vector<int>> joints = finger_joints(hand);
+  const int a = click_next_to(hand.mesh.mesh, joints[0]), b = click_next_to(hand.mesh.mesh, joints[1]);
+  const std::string at = " --at " + std::to_string(a) + " --at " + std::to_string(b);
+
+  const mpm_test::Run_result cut =
+    mpm_test::run_tool(dir.path(), "cut " + dir.file("hand.off") + at + " -o " + dir.file("out/hand") + " --json");
+  ASSERT_EQ(cut.status, 0) << cut.err;
+  const nlohmann::json summary = nlohmann::json::parse(cut.out);
+  ASSERT_EQ(summary["cuts"].size(), 2u);
+  EXPECT_EQ(summary["cuts"][0]["vertex"].get<int>(), a);
+  EXPECT_GT(summary["cuts"][1]["length"].get<double>(), 0.);
+  EXPECT_EQ(summary["parts"].get<int>(), 3);
+  const std::vector<int> labels = read_seg_file(dir.file("out/hand.seg"));
+  EXPECT_EQ(labels.size(), hand.mesh.mesh.triangles.size());
+  EXPECT_EQ(std::set<int>(labels.begin(), labels.end()).size(), 3u);
+
+  // The same joint twice: exit status 1, the vertex named, nothing written.
+  const mpm_test::Run_result twice = mpm_test::run_tool(
+    dir.path(), "cut " + dir.file("hand.off") + " --at " + std::to_string(a) + " --at " + std::to_string(a) + " -o " +
+                  dir.file("twice"));
+  EXPECT_EQ(twice.status, 1);
+  ASSERT_EQ(twice.err_lines().size(), 1u) << twice.err;
+  EXPECT_TRUE(mpm_test::contains_all(twice.err_lines()[0], {"hand.off", "vertex " + std::to_string(a), "same joint"}))
+    << twice.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("twice.seg")));
+  // --cuts and --at together, or neither: usage errors.
+  EXPECT_EQ(mpm_test::run_tool(dir.path(), "cut " + dir.file("hand.off") + " -o " + dir.file("x")).status, 2);
+  EXPECT_EQ(mpm_test::run_tool(dir.path(), "cut " + dir.file("hand.off") + at + " --cuts c.json -o " + dir.file("x")).status, 2);
+}
+
+std::string psb_directory()
+{
+  const char* dir = std::getenv("MPM_PSB_DIR");
+  return dir && *dir ? dir : MPM_PSB_DIR;
+}
+
+// The bar on a real scan: one click on each human cut of an ant
+// (legs, antennae, body segments: closed seam loops) finds every cut, at a
+// mean distance below 1% of the bounding box diagonal (doc/MPM/Cutting.md).
+// The skeleton varies with the memory layout of the process, so a single cut
+// may come out slightly beyond 1%: each is held to 1.5%.
+TEST(Joint_cutting, OneClickPerHumanCutOfAnAnt)
+{
+  const std::string base = psb_directory() + "/ant_81";
+  if(!std::filesystem::exists(base + ".off"))
+    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+  const Labeled_mesh human = read_labeled_mesh(base + ".off", base + ".seg");
+  const Indexed_mesh& m = human.mesh;
+  std::vector<std::vector<int>> cuts;
+  std::vector<int> clicks;
+  for(const Segmentation_cut& c : segmentation_cuts(m, human.face_labels))
+    if(c.edges == int(c.vertices.size())) {
+      cuts.push_back(c.vertices);
+      clicks.push_back(central_cut_vertex(m, c.vertices));
+    }
+  ASSERT_GE(cuts.size(), 20u);
+  const Joint_cutting_result result = cut_at_vertices(m, clicks, Joint_cutting_options(), base + ".off");
+  ASSERT_EQ(result.cuts.size(), cuts.size());
+  const double diag = (m.points.colwise().maxCoeff() - m.points.colwise().minCoeff()).norm();
+  double sum = 0.;
+  for(std::size_t i = 0; i < cuts.size(); ++i) {
+    const double d = cut_distance(m, result.cuts[i].path, cuts[i]);
+    EXPECT_LT(d, 0.015 * diag) << "click at vertex " << clicks[i];
+    sum += d;
+  }
+  EXPECT_LT(sum / double(cuts.size()), 0.01 * diag);
+  EXPECT_LT(rand_index_error(m, result.mesh.face_labels, human.face_labels), 0.02);
+}
+
+} // namespace
