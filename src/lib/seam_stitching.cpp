@@ -151,6 +151,45 @@ std::pair<Location, double> project(const Seam_loop& loop, const Eigen::RowVecto
   return best;
 }
 
+// The point of `loop` at arc length `parameter` (taken modulo its length).
+Location location_at(const Seam_loop& loop, double parameter, const Point_matrix& points)
+{
+  const double p = loop.wrap(parameter);
+  const std::size_t k = std::size_t(std::upper_bound(loop.s.begin(), loop.s.end(), p) - loop.s.begin()) - 1;
+  const int a = loop.vertices[k], b = loop.vertices[(k + 1) % loop.vertices.size()];
+  const double length = (points.row(a) - points.row(b)).norm();
+  const double t = length > 0. ? std::clamp((p - loop.s[k]) / length, 0., 1.) : 0.;
+  if(t < 1e-9) return {a, -1, 0.};
+  if(t > 1. - 1e-9) return {b, -1, 0.};
+  return a < b ? Location{a, b, t} : Location{b, a, 1. - t};
+}
+
+// A rebuilt part's border loop located on its original loop goes along it
+// one way; where two of its vertices lie almost on one spot, their
+// projections can come in the other order, and the merged seam then
+// crossed itself (a quad left open between a corresponded leg segment and
+// its neighbour on a subdivided ant). Each such vertex is moved along the
+// loop to just past the one before it.
+void make_monotone(const Seam_loop& loop, const Point_matrix& points, std::vector<double>& parameter,
+                   std::vector<Location>& at)
+{
+  const std::size_t m = parameter.size();
+  if(m < 3) return;
+  const auto step = [&](double d) { // signed, in (-length / 2, length / 2]
+    d = loop.wrap(d);
+    return d > 0.5 * loop.length ? d - loop.length : d;
+  };
+  double turn = 0.;
+  for(std::size_t k = 0; k < m; ++k) turn += step(parameter[(k + 1) % m] - parameter[k]);
+  const double direction = turn >= 0. ? 1. : -1., gap = 1e-6 * loop.length;
+  for(std::size_t k = 1; k < m; ++k)
+  {
+    if(direction * step(parameter[k] - parameter[k - 1]) > 0.) continue;
+    parameter[k] = loop.wrap(parameter[k - 1] + direction * gap);
+    at[k] = location_at(loop, parameter[k], points);
+  }
+}
+
 // One point of the union: an own border vertex of a part (`label`,
 // `local`) or a junction of three or more parts (label -1).
 struct Seam_point
@@ -289,18 +328,21 @@ private:
       border.on_loop.push_back(l);
       border.point.emplace_back();
       border.parameter.emplace_back();
+      std::vector<Location> at;
+      std::vector<double> parameter;
       for(std::size_t k = 0; k < loop.size(); ++k)
       {
-        Seam_point q;
-        q.label = label;
-        q.local = loop[k];
-        q.position = p[k];
-        q.at = original[k] >= 0 ? Location{original[k], -1, 0.}
-               : l >= 0         ? project(loops_[l], p[k], original_.mesh.points).first
-                                : Location();
+        at.push_back(original[k] >= 0 ? Location{original[k], -1, 0.}
+                     : l >= 0         ? project(loops_[l], p[k], original_.mesh.points).first
+                                      : Location());
+        parameter.push_back(l >= 0 ? parameter_on(loops_[l], at.back(), original_.mesh.points) : -1.);
+      }
+      if(rebuilt && l >= 0) make_monotone(loops_[l], original_.mesh.points, parameter, at);
+      for(std::size_t k = 0; k < loop.size(); ++k)
+      {
         border.point.back().push_back(int(points_.size()));
-        border.parameter.back().push_back(l >= 0 ? parameter_on(loops_[l], q.at, original_.mesh.points) : -1.);
-        points_.push_back(q);
+        border.parameter.back().push_back(parameter[k]);
+        points_.push_back({label, loop[k], at[k], p[k]});
       }
     }
     borders_[label] = std::move(border);
