@@ -290,6 +290,22 @@ void stitch_example(const Morphable_part_model& model, Training_example& example
   for(int node : face_nodes) example.face_labels.push_back(graph.nodes[node].label);
 }
 
+// The labels of the faces on edges of one face (open seams, holes).
+std::set<int> labels_at_open_edges(const Indexed_mesh& mesh, const std::vector<int>& face_labels)
+{
+  std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(int(f));
+    }
+  std::set<int> labels;
+  for(const auto& [edge, faces] : faces_of_edge)
+    if(faces.size() == 1) labels.insert(face_labels[std::size_t(faces.front())]);
+  return labels;
+}
+
 // The learner proper, on inputs whose same-type parts share connectivity
 // (`corresponded`: how they were made so, or null).
 Morphable_part_model learn_corresponded(const std::vector<Training_input>& inputs, const Learning_options& options,
@@ -554,6 +570,22 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
         example.graph.edges.push_back(std::move(edge));
       }
     stitch_example(model, example);
+    // Stitching corresponded parts back together can fail where a
+    // template's border folds along its seam; say so rather than hand edits
+    // a surface with a gap the input did not have.
+    const Training_input& input = originals ? (*originals)[e] : inputs[e];
+    if(labels_at_open_edges(input.mesh.mesh, input.mesh.face_labels).empty())
+    {
+      const std::set<int> open = labels_at_open_edges(example.mesh, example.face_labels);
+      if(!open.empty())
+      {
+        std::string labels;
+        for(int l : open) labels += (labels.empty() ? "" : ", ") + std::to_string(l);
+        warn(input.mesh.source + ": the learned example is open at the seams of labels " + labels +
+             " although the input is closed: stitching the corresponded parts failed there (their templates fold "
+             "along the seam); edits will show a gap. Give those segments types of their own, or landmarks");
+      }
+    }
     model.examples.push_back(std::move(example));
   }
   progress("done", 1.);
