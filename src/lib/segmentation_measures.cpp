@@ -76,7 +76,8 @@ std::map<Edge, std::pair<int, int>> cut_edges(const Indexed_mesh& mesh, const st
     }
   std::map<Edge, std::pair<int, int>> cuts;
   for(const auto& [edge, faces] : faces_of_edge) {
-    const auto other = std::find_if(faces.begin(), faces.end(), [&](int f) { return labels[f] != labels[faces[0]]; });
+    const int first = labels[faces[0]];
+    const auto other = std::find_if(faces.begin(), faces.end(), [&labels, first](int f) { return labels[f] != first; });
     if(other != faces.end())
       cuts[edge] = std::minmax(labels[faces[0]], labels[*other]);
   }
