@@ -52,6 +52,7 @@ Point_matrix refine_points(const Point_matrix& points, const std::vector<Inserte
 Eigen::MatrixXd refine_modes(const Eigen::MatrixXd& modes, const std::vector<Inserted_vertex>& inserted)
 {
   Eigen::MatrixXd r(modes.rows() + 3 * Eigen::Index(inserted.size()), modes.cols());
+  if(modes.cols() == 0) return r; // no modes: no data to take row blocks of
   r.topRows(modes.rows()) = modes;
   for(std::size_t k = 0; k < inserted.size(); ++k)
     r.middleRows(modes.rows() + 3 * Eigen::Index(k), 3) =
