@@ -42,7 +42,9 @@ int choose_segment_shape(const Morphable_part_model& model, Part_graph& graph, i
   Eigen::VectorXd chosen = candidates.front();
   for(std::size_t k = 1; k < candidates.size() && best > 0; ++k)
   {
-    if(candidates[k].size() != space.number_of_modes() || candidates[k] == chosen) continue;
+    if(candidates[k].size() != space.number_of_modes() ||
+       (chosen.size() == candidates[k].size() && candidates[k] == chosen))
+      continue; // Eigen compares vectors of one size only
     Part_graph trial = graph;
     trial.nodes[std::size_t(node)].coordinates = candidates[k];
     const int crossings = crossings_of_placement(model, trial);
