@@ -12,10 +12,10 @@
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Elapsed_time.h>
 
 #include <pybind11/stl.h>
 
-#include <chrono>
 #include <mutex>
 
 namespace mpm_python {
@@ -23,12 +23,8 @@ namespace mpm_python {
 namespace {
 
 using namespace CGAL::MPM;
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using internal::Clock;
+using internal::milliseconds_since;
 
 template <class Enum>
 Enum parse_choice(const py::handle& value, const std::string& key,

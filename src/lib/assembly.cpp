@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Assembly.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/internal/Elapsed_time.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 
 #include <boost/pending/disjoint_sets.hpp>
@@ -22,12 +23,8 @@ namespace MPM {
 namespace {
 
 using internal::gather_rows;
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using internal::Clock;
+using internal::milliseconds_since;
 
 Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a after b
 {

@@ -14,7 +14,6 @@
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <cmath>
 #include <iostream>
@@ -27,7 +26,6 @@ using CGAL::MPM::internal::lower_extension;
 namespace {
 
 using Color_matrix = Eigen::Matrix<unsigned char, Eigen::Dynamic, 3>;
-using Clock = std::chrono::steady_clock;
 
 Color_matrix part_type_colors(const CGAL::MPM::Training_example& example)
 {
@@ -44,11 +42,6 @@ Color_matrix part_type_colors(const CGAL::MPM::Training_example& example)
   return colors;
 }
 
-double milliseconds_since(Clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 const Option_spec& find_spec(const std::vector<Option_spec>& options, const std::string& name)
 {
   return *std::find_if(options.begin(), options.end(), [&](const Option_spec& o) { return o.name == name; });
@@ -61,48 +54,6 @@ double relative_rms_displacement(const CGAL::MPM::Point_matrix& before, const CG
   const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(before);
   const double rms = std::sqrt((after - before).rowwise().squaredNorm().mean());
   return diagonal > 0 ? rms / diagonal : rms;
-}
-
-// Displacements beyond this many bounding-box diagonals are no shape anyone
-// asked for: a handle target of 1e150 wrote displacements of 1e148, one of
-// 1e308 overflowed the solve, and neither error named the handle.
-constexpr double farthest_sensible_move = 100.;
-
-// Refused before the solve, naming the handle.
-void check_handle_targets(const CGAL::MPM::Point_matrix& rest, const CGAL::MPM::Handle_set& handles,
-                          const std::string& handles_file)
-{
-  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(rest);
-  for(int k = 0; k < handles.size(); ++k)
-  {
-    const double asked = (handles.targets.row(k) - rest.row(handles.vertices[k])).stableNorm() / diagonal;
-    if(diagonal > 0. && !(asked <= farthest_sensible_move))
-      throw CGAL::MPM::Input_error(handles_file, "handle " + std::to_string(k) + " (vertex " +
-                                                   std::to_string(handles.vertices[k]) + ")",
-                                   "its target is " + format_number(asked) + " bounding-box diagonals away (more than " +
-                                     format_number(farthest_sensible_move) + "); nothing written");
-  }
-}
-
-// Refused before writing, whatever moved the vertices so far.
-void check_displacement(const CGAL::MPM::Point_matrix& before, const CGAL::MPM::Point_matrix& after,
-                        const std::string& model_path)
-{
-  const double diagonal = CGAL::MPM::internal::bounding_box_diagonal(before);
-  const double moved = (after - before).rowwise().norm().maxCoeff() / diagonal;
-  if(diagonal > 0. && moved > farthest_sensible_move)
-    throw CGAL::MPM::Computation_error("the edit of " + model_path + " moves vertices by up to " + format_number(moved) +
-                                       " bounding-box diagonals (more than " + format_number(farthest_sensible_move) +
-                                       "); nothing written");
-}
-
-// The example's mesh at other positions.
-CGAL::MPM::Indexed_mesh edited_mesh(const CGAL::MPM::Training_example& example, const CGAL::MPM::Point_matrix& points)
-{
-  CGAL::MPM::Indexed_mesh m;
-  m.points = points;
-  m.triangles = example.mesh.triangles;
-  return m;
 }
 
 std::string setting_text(const Json& value)
@@ -169,40 +120,23 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   const Training_example& input = model.examples[example];
   const std::string handles_file = args.text("handles");
   const Handle_set handles = handles_file.empty() ? Handle_set() : read_handles(handles_file, input.mesh.points);
-  check_handle_targets(input.mesh.points, handles, handles_file);
 
-  Embedding_options options;
+  Edit_options edit;
+  Embedding_options& options = edit.solver;
   options.max_iterations = static_cast<int>(args.integer("iterations", options.max_iterations));
   options.tolerance = args.real("tolerance", options.tolerance);
   options.handle_weight = args.real("handle-weight", options.handle_weight);
   options.coupling_weight = args.real("coupling", options.coupling_weight);
   options.iteration_callback = iteration_progress(context.progress, "solving", 0.3, 0.9, options.max_iterations);
+  edit.unfold = !args.flag("keep-folds");
+  edit.handles_source = handles_file;
+  edit.example = example;
 
   context.progress.update("setting up", 0.1);
-  const Clock::time_point setup_start = Clock::now();
   Json settings = Json::object();
-  Embedding_solver solver(editing.make_problem(args, model, example, settings), options);
-  if(handles.size() > 0) solver.set_handles(handles.vertices, handles.targets);
-  solver.preprocess();
-  const double setup_ms = milliseconds_since(setup_start);
-
-  context.progress.update("solving", 0.3);
-  const Clock::time_point solve_start = Clock::now();
-  const Solve_report report = solver.solve();
-  const double solve_ms = milliseconds_since(solve_start);
-  if(!solver.positions().allFinite() || !std::isfinite(report.energy()))
-    throw Computation_error("the solver produced non-finite positions or energy for example " +
-                            std::to_string(example) + " of " + model_path +
-                            " (try a smaller --handle-weight or handle offsets)");
-  const int folds_solved =
-    static_cast<int>(inverted_faces(edited_mesh(input, solver.positions()), input.mesh, &input.face_labels).size());
-  const Clock::time_point unfold_start = Clock::now();
-  const Point_matrix result =
-    args.flag("keep-folds") ? solver.positions() : unfold_faces(input.mesh, solver.positions(), handles.vertices);
-  const double unfold_ms = milliseconds_since(unfold_start);
-  const Indexed_mesh edited = edited_mesh(input, result);
-  const int folds_written = static_cast<int>(inverted_faces(edited, input.mesh, &input.face_labels).size());
-  check_displacement(input.mesh.points, result, model_path);
+  const Edit_result r = solve_edit(model, editing.make_problem(args, model, example, settings), handles, edit);
+  const Indexed_mesh& edited = r.mesh;
+  const Solve_report& report = r.report;
 
   context.progress.update("writing " + output, 0.9);
   ensure_parent_directory(output);
@@ -229,13 +163,13 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
     {"converged", report.converged},
     {"energies", report.energies},
     {"residual_energy", report.energy()},
-    {"setup_ms", setup_ms},
-    {"solve_ms", solve_ms},
-    {"ms_per_iteration", report.iterations > 0 ? solve_ms / report.iterations : 0.},
-    {"inverted_faces_solved", folds_solved},
-    {"inverted_faces_written", folds_written},
-    {"unfold_ms", unfold_ms},
-    {"rms_displacement", relative_rms_displacement(input.mesh.points, result)},
+    {"setup_ms", r.setup_ms},
+    {"solve_ms", r.solve_ms},
+    {"ms_per_iteration", report.iterations > 0 ? r.solve_ms / report.iterations : 0.},
+    {"inverted_faces_solved", r.inverted_faces_solved},
+    {"inverted_faces_written", r.inverted_faces_written},
+    {"unfold_ms", r.unfold_ms},
+    {"rms_displacement", relative_rms_displacement(input.mesh.points, edited.points)},
     {"output", output},
   };
   if(context.json) print_json(summary);

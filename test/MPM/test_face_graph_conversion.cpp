@@ -10,8 +10,10 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#ifdef MPM_HAS_OPENMESH
 #include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#endif
 
 #include <boost/property_map/function_property_map.hpp>
 
@@ -21,7 +23,9 @@ namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
 using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+#ifdef MPM_HAS_OPENMESH
 using Open_mesh = OpenMesh::TriMesh_ArrayKernelT<>;
+#endif
 
 // A 3 x 3 vertex grid (8 triangles) plus a tetrahedron as a second component.
 const std::vector<std::array<double, 3>> points = {
@@ -40,6 +44,7 @@ Surface_mesh make_surface_mesh()
   return sm;
 }
 
+#ifdef MPM_HAS_OPENMESH
 Open_mesh make_open_mesh()
 {
   Open_mesh om;
@@ -48,6 +53,7 @@ Open_mesh make_open_mesh()
   for(const auto& t : triangles) om.add_face(v[t[0]], v[t[1]], v[t[2]]);
   return om;
 }
+#endif
 
 Indexed_mesh expected_mesh()
 {
@@ -78,12 +84,14 @@ TEST(FaceGraphConversion, SurfaceMeshAndOpenMeshGiveTheSameMesh)
 {
   const Indexed_mesh expected = expected_mesh();
   const Surface_mesh sm = make_surface_mesh();
-  const Open_mesh om = make_open_mesh();
   const Indexed_mesh from_sm = to_indexed_mesh(sm);
-  const Indexed_mesh from_om = to_indexed_mesh(om);
   expect_equal_meshes(from_sm, expected);
+#ifdef MPM_HAS_OPENMESH
+  const Open_mesh om = make_open_mesh();
+  const Indexed_mesh from_om = to_indexed_mesh(om);
   expect_equal_meshes(from_om, expected);
   EXPECT_EQ(from_sm.triangles, from_om.triangles);
+#endif
 }
 
 TEST(FaceGraphConversion, VertexPointMapParameter)
@@ -116,6 +124,7 @@ TEST(FaceGraphConversion, FaceLabelsFollowFaceOrder)
   for(auto f : faces(sm)) label[f] = static_cast<unsigned char>(i++ < 8 ? 0 : 1);
   EXPECT_EQ(face_labels_from_map(sm, label), (std::vector<int>{0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1}));
 
+#ifdef MPM_HAS_OPENMESH
   Open_mesh om = make_open_mesh();
   OpenMesh::FPropHandleT<int> part;
   om.add_property(part);
@@ -125,6 +134,7 @@ TEST(FaceGraphConversion, FaceLabelsFollowFaceOrder)
   const std::vector<int> labels = face_labels_from_map(om, map);
   ASSERT_EQ(labels.size(), triangles.size());
   for(std::size_t f = 0; f < labels.size(); ++f) EXPECT_EQ(labels[f], int(2 * f));
+#endif
 }
 
 TEST(FaceGraphConversion, NonTriangleFacesAreRejected)
@@ -147,6 +157,12 @@ TEST(FaceGraphConversion, NonTriangleFacesAreRejected)
 // on OpenMesh as on the plain indexed mesh.
 namespace {
 
+void set_point(Surface_mesh& g, Surface_mesh::Vertex_index v, double x, double y, double z)
+{
+  g.point(v) = Kernel::Point_3(x, y, z);
+}
+
+#ifdef MPM_HAS_OPENMESH
 struct Double_traits : public OpenMesh::DefaultTraits
 {
   typedef OpenMesh::Vec3d Point;
@@ -154,16 +170,12 @@ struct Double_traits : public OpenMesh::DefaultTraits
 };
 using Open_mesh_d = OpenMesh::TriMesh_ArrayKernelT<Double_traits>;
 
-void set_point(Surface_mesh& g, Surface_mesh::Vertex_index v, double x, double y, double z)
-{
-  g.point(v) = Kernel::Point_3(x, y, z);
-}
-
 // CGAL 5.5's OpenMesh point map writes through float, so set points natively.
 void set_point(Open_mesh_d& g, Open_mesh_d::VertexHandle v, double x, double y, double z)
 {
   g.set_point(v, Open_mesh_d::Point(x, y, z));
 }
+#endif
 
 template <class Mesh>
 Morphable_part_model learn_through_face_graph(const Synthetic_model& s, Mesh& g)
@@ -211,6 +223,8 @@ TEST(FaceGraphLearning, surface_mesh_and_open_mesh_match_the_indexed_mesh)
 
   Surface_mesh sm;
   expect_same_model(reference, learn_through_face_graph(s, sm));
+#ifdef MPM_HAS_OPENMESH
   Open_mesh_d om;
   expect_same_model(reference, learn_through_face_graph(s, om));
+#endif
 }

@@ -4,6 +4,8 @@
 #define CGAL_MPM_EDITING_H
 
 #include <CGAL/MPM/Embedding_problem.h>
+#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Handle_set.h>
 #include <CGAL/MPM/Morphable_part_model.h>
 
 #include <Eigen/Core>
@@ -76,6 +78,46 @@ Embedding_problem make_caricature_problem(const Morphable_part_model& model, dou
 /// handles) do not move; nothing moves when there is no fold. The
 /// editing commands of `mpm` apply it unless given `--keep-folds`.
 Point_matrix unfold_faces(const Indexed_mesh& rest, const Point_matrix& positions, const std::vector<int>& held = {});
+
+/// \ingroup PkgMPMRef
+/// Options of `solve_edit()`.
+struct Edit_options
+{
+  int example = 0;          ///< training example to edit
+  Embedding_options solver; ///< options of the embedding solver
+  /// Take the folds the solver made out of the result (`unfold_faces()`);
+  /// false writes the solver's positions as they are.
+  bool unfold = true;
+  /// Names the handles (their file) in error messages.
+  std::string handles_source = "handles";
+};
+
+/// \ingroup PkgMPMRef
+/// An edit solved to its result.
+struct Edit_result
+{
+  Indexed_mesh mesh;   ///< the edited mesh: the example's triangles at their new positions
+  Solve_report report; ///< what the solver did
+  /// Faces the solver turned inside out within their part, and as many
+  /// after the folds were taken out (`inverted_faces()`).
+  int inverted_faces_solved = 0;
+  int inverted_faces_written = 0; ///< see `inverted_faces_solved`
+  double setup_ms = 0.;  ///< solver construction, handles and factorization
+  double solve_ms = 0.;  ///< solver iterations
+  double unfold_ms = 0.; ///< `unfold_faces()`
+};
+
+/// \ingroup PkgMPMRef
+/// Solves `problem` (one of the editing problems of example
+/// `options.example`) with `handles` (vertices of the example's mesh and
+/// their targets) to
+/// convergence and takes out the folds, as the editing commands of `mpm`
+/// do. Throws `Input_error` for an example out of range, a handle vertex
+/// out of range or a handle target more than 100 bounding-box diagonals
+/// away (naming the handle), and `Computation_error` when the solver gives
+/// non-finite positions or moves a vertex that far.
+Edit_result solve_edit(const Morphable_part_model& model, const Embedding_problem& problem,
+                       const Handle_set& handles = Handle_set(), const Edit_options& options = Edit_options());
 
 } // namespace MPM
 } // namespace CGAL

@@ -1,0 +1,167 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The whole pipeline over the user's own mesh type: cut -> learn -> deform
+// -> assemble on Surface_mesh, Polyhedron_3 and OpenMesh, with labels and
+// results in property maps, gives what the indexed-mesh path gives.
+#include <CGAL/MPM/Face_graph_editing.h>
+#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/learn_morphable_part_model.h>
+
+#include "Hand_cuts.h"
+#include "Learned_models.h"
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#ifdef MPM_HAS_OPENMESH
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#endif
+
+#include <gtest/gtest.h>
+
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace CGAL::MPM;
+using Kernel = CGAL::Simple_cartesian<double>;
+using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+
+const Synthetic_model& hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth; }
+
+// Three tip vertices of the example pulled sideways, the wrist held.
+Handle_set tip_handles(const Indexed_mesh& mesh)
+{
+  Handle_set h;
+  const Eigen::Index n = mesh.points.rows();
+  const double diagonal = (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).norm();
+  h.vertices = {0, int(n / 3), int(2 * n / 3)};
+  h.targets.resize(3, 3);
+  for(int k = 0; k < 3; ++k) h.targets.row(k) = mesh.points.row(h.vertices[std::size_t(k)]);
+  h.targets.row(1) += Eigen::RowVector3d(0.05, 0.02, 0.) * diagonal;
+  h.targets.row(2) += Eigen::RowVector3d(-0.03, 0.04, 0.01) * diagonal;
+  return h;
+}
+
+// What the indexed-mesh path gives: the reference each mesh type is held to.
+struct Reference
+{
+  Cutting_result cut;
+  Morphable_part_model model;
+  Edit_result deformed;
+  Assembly assembly;
+};
+
+const Reference& reference()
+{
+  static const Reference r = [] {
+    Reference ref;
+    ref.cut = cut_mesh(hand().mesh.mesh, mpm_test::hand_cuts(hand()), Cutting_options(), "hand");
+    ref.model = learn_morphable_part_model(ref.cut.mesh, hand().annotation);
+    ref.deformed = solve_edit(ref.model, make_deformation_problem(ref.model), tip_handles(ref.model.examples[0].mesh));
+    ref.assembly = assemble(ref.model, part_graph_of_example(ref.model));
+    return ref;
+  }();
+  return r;
+}
+
+double largest_difference(const Point_matrix& a, const Point_matrix& b)
+{
+  return a.rows() == b.rows() ? (a - b).rowwise().norm().maxCoeff() : HUGE_VAL;
+}
+
+template <class Mesh>
+void run_pipeline(double tolerance)
+{
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using Point = typename boost::property_traits<typename CGAL::GetVertexPointMap<Mesh>::type>::value_type;
+  const Reference& ref = reference();
+  const double diagonal = (hand().mesh.mesh.points.colwise().maxCoeff() - hand().mesh.mesh.points.colwise().minCoeff()).norm();
+
+  // Cut: labels land in a face property of the user's mesh.
+  Mesh input;
+  copy_to_face_graph(hand().mesh.mesh, input);
+  auto labels = get(CGAL::dynamic_face_property_t<int>(), input);
+  cut_mesh(input, mpm_test::hand_cuts(hand()), labels);
+  EXPECT_EQ(face_labels_from_map(input, labels), ref.cut.mesh.face_labels);
+
+  // Learn from the mesh and its label map.
+  const Morphable_part_model model = learn_morphable_part_model(input, labels, hand().annotation);
+  ASSERT_EQ(model.types.size(), ref.model.types.size());
+  ASSERT_EQ(model.rules.size(), ref.model.rules.size());
+
+  // Deform: the result is written into the mesh, handles are its vertices.
+  Mesh edited;
+  auto parts = get(CGAL::dynamic_face_property_t<int>(), edited);
+  copy_training_example(model, 0, edited, parts);
+  EXPECT_EQ(face_labels_from_map(edited, parts), ref.model.examples[0].face_labels);
+  const Handle_set h = tip_handles(ref.model.examples[0].mesh);
+  std::vector<vertex_descriptor> vertex(vertices(edited).begin(), vertices(edited).end());
+  std::vector<std::pair<vertex_descriptor, Point>> handles;
+  for(int k = 0; k < h.size(); ++k)
+    handles.emplace_back(vertex[std::size_t(h.vertices[std::size_t(k)])],
+                         Point(h.targets(k, 0), h.targets(k, 1), h.targets(k, 2)));
+  const Edit_result deformed = deform(model, edited, handles);
+  EXPECT_EQ(deformed.report.iterations, ref.deformed.report.iterations);
+  EXPECT_LT(largest_difference(to_indexed_mesh(edited).points, ref.deformed.mesh.points), tolerance * diagonal);
+  // The edit moved the mesh: the comparison is not of two rest states.
+  EXPECT_GT(largest_difference(to_indexed_mesh(edited).points, ref.model.examples[0].mesh.points), 0.01 * diagonal);
+
+  // Symmetrize in place.
+  Mesh symmetric;
+  copy_training_example(model, 0, symmetric, get(CGAL::dynamic_face_property_t<int>(), symmetric));
+  symmetrize(model, symmetric);
+  const Edit_result ref_symmetric = solve_edit(ref.model, make_symmetrization_problem(ref.model));
+  EXPECT_LT(largest_difference(to_indexed_mesh(symmetric).points, ref_symmetric.mesh.points), tolerance * diagonal);
+
+  // Assemble into a new mesh with the node of each face.
+  Mesh assembled;
+  auto nodes = get(CGAL::dynamic_face_property_t<int>(), assembled);
+  const Assembly a = assemble(model, part_graph_of_example(model), assembled, nodes);
+  EXPECT_EQ(face_labels_from_map(assembled, nodes), ref.assembly.face_nodes);
+  const Indexed_mesh assembled_mesh = to_indexed_mesh(assembled);
+  EXPECT_EQ(assembled_mesh.triangles, ref.assembly.mesh.triangles);
+  EXPECT_LT(largest_difference(assembled_mesh.points, ref.assembly.mesh.points), tolerance * diagonal);
+  EXPECT_NEAR(a.residual_energy, ref.assembly.residual_energy, 1e-6 + tolerance * ref.assembly.residual_energy * 1e3);
+}
+
+} // namespace
+
+TEST(FaceGraphPipeline, surface_mesh_gives_the_indexed_result)
+{
+  run_pipeline<Surface_mesh>(1e-9);
+}
+
+TEST(FaceGraphPipeline, polyhedron_gives_the_indexed_result)
+{
+  run_pipeline<Polyhedron>(1e-9);
+}
+
+#ifdef MPM_HAS_OPENMESH
+// CGAL 5.5 writes OpenMesh points through float: agreement to float precision.
+TEST(FaceGraphPipeline, open_mesh_gives_the_indexed_result)
+{
+  run_pipeline<OpenMesh::TriMesh_ArrayKernelT<>>(1e-4);
+}
+#endif
+
+TEST(FaceGraphPipeline, results_need_the_example_mesh)
+{
+  const Reference& ref = reference();
+  Surface_mesh other;
+  Indexed_mesh small;
+  small.points = Point_matrix::Random(4, 3);
+  small.triangles = {{0, 1, 2}, {0, 2, 3}};
+  copy_to_face_graph(small, other);
+  try {
+    symmetrize(ref.model, other);
+    ADD_FAILURE() << "no error";
+  } catch(const Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("has 4 vertices"), std::string::npos) << e.what();
+  }
+}
