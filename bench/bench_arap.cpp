@@ -10,7 +10,7 @@
 // choosing handles and a drag frame.
 #include "bench_models.h"
 
-#include <CGAL/MPM/Arap_deformation.h>
+#include <CGAL/MPM/Editing/Arap_deformation.h>
 
 #include <benchmark/benchmark.h>
 

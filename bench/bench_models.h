@@ -6,14 +6,14 @@
 #ifndef CGAL_MPM_BENCH_MODELS_H
 #define CGAL_MPM_BENCH_MODELS_H
 
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_problem.h>
-#include <CGAL/MPM/Handle_set.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Morphable_part_model.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_problem.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <cstdlib>

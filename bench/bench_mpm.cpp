@@ -22,7 +22,7 @@
 // schur_ms, back_substitution_ms, direct_ms, energy_ms.
 #include "bench_models.h"
 
-#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
 
 #include <benchmark/benchmark.h>
 

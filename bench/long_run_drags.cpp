@@ -12,11 +12,11 @@
 // non-finite value or exception.
 #include "quality_common.h"
 
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_problem.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_problem.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>

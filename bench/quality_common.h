@@ -5,7 +5,7 @@
 #ifndef CGAL_MPM_BENCH_QUALITY_COMMON_H
 #define CGAL_MPM_BENCH_QUALITY_COMMON_H
 
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <cstdio>
 #include <cstdlib>

@@ -15,7 +15,7 @@
 // quality programs share a command line) and ignored.
 #include "quality_common.h"
 
-#include <CGAL/MPM/Correspondence_evaluation.h>
+#include <CGAL/MPM/Baselines/Correspondence_evaluation.h>
 
 #include <iostream>
 

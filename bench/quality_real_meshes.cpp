@@ -8,17 +8,17 @@
 // surface like the input, do symmetrize, caricature and a drag of every
 // tip converge with closed seams and no flipped faces, do segments keep
 // their length. Prints a Markdown table.
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Assembly.h>
-#include <CGAL/MPM/Part_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/Surface_soundness.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include "quality_common.h"
 #include <CGAL/MPM/internal/Bounding_box.h>

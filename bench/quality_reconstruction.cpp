@@ -13,11 +13,11 @@
 // The row method=rest is the undeformed training mesh. CSV on stdout or --csv.
 #include "quality_common.h"
 
-#include <CGAL/MPM/Deformation_method.h>
-#include <CGAL/MPM/Handle_set.h>
-#include <CGAL/MPM/Laplacian_editing.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Baselines/Deformation_method.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
+#include <CGAL/MPM/Editing/Laplacian_editing.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <chrono>

@@ -8,9 +8,9 @@
 // cut, and the Princeton Segmentation Benchmark's four measures.
 #include "quality_common.h"
 
-#include <CGAL/MPM/Joint_cutting.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Segmentation_measures.h>
+#include <CGAL/MPM/Cutting/Joint_cutting.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Cutting/Segmentation_measures.h>
 
 #include <algorithm>
 #include <chrono>

@@ -17,9 +17,9 @@
 // quality programs share a command line) and ignored.
 #include "quality_common.h"
 
-#include <CGAL/MPM/Shape_space.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Model/Shape_space.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // libFuzzer target: parse_annotation() on arbitrary text.
 #include "fuzz_common.h"
 
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -5,7 +5,7 @@
 // of 16 vertices.
 #include "fuzz_common.h"
 
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

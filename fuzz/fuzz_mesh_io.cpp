@@ -9,7 +9,7 @@
 // directory (one per fuzzing process).
 #include "fuzz_common.h"
 
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include <cstring>
 #include <unistd.h>

@@ -7,9 +7,9 @@
 // mutations reach the payload parser and the consistency checks.
 #include "fuzz_common.h"
 
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <boost/crc.hpp>
 

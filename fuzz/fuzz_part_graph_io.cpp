@@ -5,9 +5,9 @@
 // learned once from the synthetic hexa-grid (about 300 vertices).
 #include "fuzz_common.h"
 
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <memory>
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Main_window.h"
 
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <QApplication>
 #include <QCheckBox>

@@ -8,10 +8,10 @@
 #ifndef MPM_DEMO_SESSION_H
 #define MPM_DEMO_SESSION_H
 
-#include <CGAL/MPM/Assembly.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
-#include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
 
 #include <QMutex>
 #include <QObject>

@@ -6,12 +6,12 @@
 // For instance, with CGAL's sample meshes (Debian: libcgal-demo) extracted to data/:
 //   cut_and_learn data/diplodocus.off examples/MPM/data/diplodocus_legs.cuts.json \
 //                 examples/MPM/data/diplodocus_legs.annotation.json
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_cutting.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <cstdlib>
 #include <iostream>

@@ -1,12 +1,12 @@
 // Free-form deformation with a morphable part model: learns the synthetic
 // hand, takes a few handles from a held-out pose of the same hand (one per
 // part), solves, and measures the result against the held-out pose.
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <algorithm>
 #include <cmath>

@@ -9,10 +9,10 @@
 // For instance, with CGAL's sample meshes (Debian: libcgal-demo) extracted to data/:
 //   face_graph_pipeline data/diplodocus.off examples/MPM/data/diplodocus_legs.cuts.json \
 //                       examples/MPM/data/diplodocus_legs.annotation.json
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Face_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Editing/Face_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polyhedron_3.h>

@@ -5,13 +5,13 @@
 // Usage: learn_from_files [mesh.off labels.seg annotation.json [model.mpm]]
 // Without arguments, a small synthetic spine (separate vertebrae, so the
 // dockings are generalized) is first written to a temporary directory.
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Shape_grammar.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Model/Shape_grammar.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <filesystem>
 #include <iostream>

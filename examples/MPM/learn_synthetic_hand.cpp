@@ -1,9 +1,9 @@
 // Learns a morphable part model from the built-in synthetic hand and prints
 // what it learned: part types with their shape spaces, and the grammar.
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Shape_grammar.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Model/Shape_grammar.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <iostream>
 

@@ -2,11 +2,11 @@
 // symmetrization (every tile pulled to its type's mean shape) and a
 // caricature (every tile's deviation from the mean doubled). Writes both as
 // OFF files and prints their residual energies.
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <cmath>
 #include <iostream>

@@ -3,7 +3,7 @@
 #include "arrays.h"
 
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include <cmath>
 #include <cstring>

@@ -6,9 +6,9 @@
 #include "bindings.h"
 #include "model_data.h"
 
-#include <CGAL/MPM/Assembly.h>
-#include <CGAL/MPM/Part_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
 
 #include <pybind11/stl.h>
 

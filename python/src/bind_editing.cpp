@@ -7,10 +7,10 @@
 #include "arrays.h"
 #include "bindings.h"
 
-#include <CGAL/MPM/Deformation_method.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Baselines/Deformation_method.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Elapsed_time.h>
 

@@ -7,12 +7,12 @@
 #include "bindings.h"
 #include "synthetic.h"
 
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Mesh_cutting.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/Surface_soundness.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <pybind11/stl.h>
 

@@ -8,10 +8,10 @@
 #include "model_data.h"
 #include "synthetic.h"
 
-#include <CGAL/MPM/Model_fit.h>
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Learning/Model_fit.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <pybind11/stl.h>
 

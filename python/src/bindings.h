@@ -8,8 +8,8 @@
 #ifndef CGAL_MPM_PYTHON_BINDINGS_H
 #define CGAL_MPM_PYTHON_BINDINGS_H
 
-#include <CGAL/MPM/Cancellation.h>
-#include <CGAL/MPM/Model_parameters.h>
+#include <CGAL/MPM/Solver/Cancellation.h>
+#include <CGAL/MPM/Model/Model_parameters.h>
 
 #include <pybind11/pybind11.h>
 

@@ -6,7 +6,7 @@
 #ifndef CGAL_MPM_PYTHON_MODEL_DATA_H
 #define CGAL_MPM_PYTHON_MODEL_DATA_H
 
-#include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
 
 #include <pybind11/pybind11.h>
 

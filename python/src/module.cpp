@@ -5,8 +5,8 @@
 // binding files share; each stage's functions are in a bind_*.cpp file.
 #include "bindings.h"
 
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Cancellation.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Solver/Cancellation.h>
 #include <CGAL/MPM/Input_error.h>
 
 #include <algorithm>

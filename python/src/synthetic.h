@@ -6,7 +6,7 @@
 #ifndef CGAL_MPM_PYTHON_SYNTHETIC_H
 #define CGAL_MPM_PYTHON_SYNTHETIC_H
 
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <utility>
 

@@ -12,12 +12,12 @@
 //       learns the synthetic hand, sets one handle per part, then drags the
 //       first handle back and forth (1% of the diagonal per frame), one
 //       converged solve and one positions() per frame; prints ms per frame.
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <nlohmann/json.hpp>
 

@@ -2,12 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "assembly_common.h"
 
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
 #include <CGAL/MPM/Part_colors.h>
 #include <CGAL/MPM/internal/Mesh_file_checks.h>
-#include <CGAL/MPM/Part_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
 
 #include <algorithm>
 

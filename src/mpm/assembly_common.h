@@ -9,8 +9,8 @@
 
 #include "cli.h"
 
-#include <CGAL/MPM/Assembly.h>
-#include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
 
 #include <string>
 

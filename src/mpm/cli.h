@@ -8,7 +8,7 @@
 #ifndef CGAL_MPM_TOOL_CLI_H
 #define CGAL_MPM_TOOL_CLI_H
 
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include <nlohmann/json.hpp>
 

@@ -7,8 +7,8 @@
 #include "assembly_common.h"
 
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Part_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
 
 #include <climits>
 #include <cmath>

@@ -5,7 +5,7 @@
 // (F < 0) how each part differs from its type's mean.
 #include "editing_common.h"
 
-#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Editing/Editing.h>
 
 namespace mpm {
 

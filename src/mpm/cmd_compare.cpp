@@ -8,11 +8,11 @@
 // known pose, their errors.
 #include "cli.h"
 
-#include <CGAL/MPM/Deformation_method.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Baselines/Deformation_method.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <chrono>

@@ -7,11 +7,11 @@
 #include "cli.h"
 #include "standard_streams.h"
 
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/internal/Atomic_file.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <chrono>
 #include <climits>

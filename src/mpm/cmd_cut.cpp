@@ -8,9 +8,9 @@
 #include "cli.h"
 
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Joint_cutting.h>
-#include <CGAL/MPM/Mesh_cutting.h>
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Cutting/Joint_cutting.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include <climits>
 #include <cmath>

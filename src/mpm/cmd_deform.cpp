@@ -5,7 +5,7 @@
 // training example within the learned shape spaces.
 #include "editing_common.h"
 
-#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Editing/Editing.h>
 
 namespace mpm {
 

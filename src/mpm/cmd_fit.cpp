@@ -10,13 +10,13 @@
 #include "standard_streams.h"
 #include "mesh_files.h"
 
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_fit.h>
-#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Learning/Model_fit.h>
+#include <CGAL/MPM/IO/Model_io.h>
 #include <CGAL/MPM/Part_colors.h>
-#include <CGAL/MPM/Part_type_proposal.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
 
 #include <chrono>
 #include <climits>

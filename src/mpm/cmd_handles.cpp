@@ -6,11 +6,11 @@
 // targets from another pose of the same mesh, for scripted comparisons.
 #include "cli.h"
 
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
 
 #include <climits>
 #include <iostream>

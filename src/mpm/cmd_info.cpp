@@ -5,7 +5,7 @@
 // of a saved model.
 #include "cli.h"
 
-#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
 
 #include <iostream>
 

@@ -9,11 +9,11 @@
 #include "standard_streams.h"
 #include "mesh_files.h"
 
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <algorithm>
 #include <chrono>

@@ -6,7 +6,7 @@
 #include "assembly_common.h"
 
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
 
 #include <climits>
 #include <cmath>

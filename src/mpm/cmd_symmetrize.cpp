@@ -5,7 +5,7 @@
 // every pair geometry of a rule) toward the same shape.
 #include "editing_common.h"
 
-#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Editing/Editing.h>
 
 #include <cmath>
 

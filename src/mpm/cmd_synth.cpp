@@ -5,10 +5,10 @@
 // (mesh, per-face labels, annotation) with known variation.
 #include "cli.h"
 
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <climits>
 #include <iostream>

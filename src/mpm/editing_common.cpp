@@ -2,15 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "editing_common.h"
 
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
 #include <CGAL/MPM/Part_colors.h>
 #include <CGAL/MPM/internal/Mesh_file_checks.h>
-#include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>

@@ -11,8 +11,8 @@
 
 #include "cli.h"
 
-#include <CGAL/MPM/Embedding_problem.h>
-#include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/Solver/Embedding_problem.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
 
 #include <functional>
 #include <string>

@@ -5,8 +5,8 @@
 // as JSON, rendered as tables from that JSON so both forms always agree.
 #include "cli.h"
 
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -6,8 +6,8 @@
 #ifndef MPM_TEST_HAND_CUTS_H
 #define MPM_TEST_HAND_CUTS_H
 
-#include <CGAL/MPM/Mesh_cutting.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <map>
 #include <set>

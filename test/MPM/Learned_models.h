@@ -6,8 +6,8 @@
 #ifndef CGAL_MPM_TEST_LEARNED_MODELS_H
 #define CGAL_MPM_TEST_LEARNED_MODELS_H
 
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <map>
 #include <utility>

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 
 using namespace CGAL::MPM;
 

@@ -7,10 +7,10 @@
 // not move its farthest points at all.
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Arap_deformation.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Editing/Arap_deformation.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

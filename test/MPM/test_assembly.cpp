@@ -5,12 +5,12 @@
 //
 // This test includes CGAL's self-intersection test (heavier than the other
 // test sources): it is the independent check the issue asks for.
-#include <CGAL/MPM/Assembly.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Part_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>

@@ -6,13 +6,13 @@
 // per ring, each type learned from its own chain of tubes; then A - B - A.
 //
 // Like test_assembly.cpp, this test includes CGAL's self-intersection test.
-#include <CGAL/MPM/Assembly.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Part_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>

@@ -6,17 +6,17 @@
 // is byte-for-byte unchanged.
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_problem.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_problem.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Morphable_part_model.h>
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <gtest/gtest.h>
 

@@ -6,14 +6,14 @@
 // a rigid motion of the handles is exact for the spline (affine part) but
 // not for linear Laplacian editing (its details do not rotate); every
 // method stays finite on every family; bad handles are refused.
-#include <CGAL/MPM/Deformation_method.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Baselines/Deformation_method.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Laplacian_editing.h>
-#include <CGAL/MPM/Shape_space_fit.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/Thin_plate_spline.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Editing/Laplacian_editing.h>
+#include <CGAL/MPM/Baselines/Shape_space_fit.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Correspondence/Thin_plate_spline.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include "Learned_models.h"
 

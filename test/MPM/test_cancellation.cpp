@@ -5,12 +5,12 @@
 // check with Operation_cancelled, and what was interrupted stays usable.
 #include "Learned_models.h"
 
-#include <CGAL/MPM/Assembly.h>
-#include <CGAL/MPM/Cancellation.h>
-#include <CGAL/MPM/Deformation_method.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Part_graph_io.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Solver/Cancellation.h>
+#include <CGAL/MPM/Baselines/Deformation_method.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // Runs the editing commands of the built `mpm` tool (deform, symmetrize,
 // caricature) on a model learned from the synthetic hand, and checks the
 // meshes they write, their JSON summaries and their errors.
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include "Tool_test_support.h"
 

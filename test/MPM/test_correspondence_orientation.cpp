@@ -4,8 +4,8 @@
 // Dense correspondence never turns a part inside out: a segment given with
 // its mirror image as one part type, and the phalanges of a real hand
 // (MPM_PSB_DIR, skipped with a message when absent; only read).
-#include <CGAL/MPM/Dense_correspondence.h>
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/Correspondence/Dense_correspondence.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include "Tube_mesh.h"
 

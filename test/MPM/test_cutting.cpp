@@ -6,9 +6,9 @@
 // valley, every bad input is a clear Input_error, and `mpm cut` writes what
 // `mpm learn` reads.
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_cutting.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 
 #include "Io_test_support.h"

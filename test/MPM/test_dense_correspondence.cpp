@@ -7,15 +7,15 @@
 #include "Tube_mesh.h"
 #include "Tool_test_support.h"
 
-#include <CGAL/MPM/Correspondence_evaluation.h>
-#include <CGAL/MPM/Dense_correspondence.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Baselines/Correspondence_evaluation.h>
+#include <CGAL/MPM/Correspondence/Dense_correspondence.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include <CGAL/MPM/Arap_deformation.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Handle_set.h>
-#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Editing/Arap_deformation.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include "Learned_models.h"
 

@@ -4,9 +4,9 @@
 // The whole pipeline over the user's own mesh type: cut -> learn -> deform
 // -> assemble on Surface_mesh, Polyhedron_3 and OpenMesh, with labels and
 // results in property maps, gives what the indexed-mesh path gives.
-#include <CGAL/MPM/Face_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Editing/Face_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include "Hand_cuts.h"
 #include "Learned_models.h"

@@ -1,8 +1,8 @@
 // Learning on every synthetic family, checked against the generator's truth.
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Shape_grammar.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Model/Shape_grammar.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 // target did: each must now be refused with an Input_error.
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // deterministic generators used by tests and benchmarks.
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <gtest/gtest.h>
 

@@ -5,10 +5,10 @@
 // click next to each true seam finds a cut close to it and gives the true
 // parts back; bad clicks and bad meshes are Input_errors naming the vertex.
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Joint_cutting.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Segmentation_measures.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Cutting/Joint_cutting.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Cutting/Segmentation_measures.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include "Io_test_support.h"
 #include "Learned_models.h"

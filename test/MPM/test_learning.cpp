@@ -1,7 +1,7 @@
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Shape_grammar.h>
-#include <CGAL/MPM/Surface_soundness.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Model/Shape_grammar.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/internal/Atomic_file.h>
 
 #include <unistd.h>

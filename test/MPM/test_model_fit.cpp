@@ -7,15 +7,15 @@
 // coordinates its true correspondence gives; leave-one-out over the
 // segmented PSB hands (MPM_PSB_DIR, skipped with a message when absent;
 // only read) stays below a measured bound; bad input names the segment.
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Correspondence_evaluation.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Baselines/Correspondence_evaluation.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Model_fit.h>
-#include <CGAL/MPM/Model_io.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/Synthetic_model.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Learning/Model_fit.h>
+#include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include "Tool_test_support.h"
 

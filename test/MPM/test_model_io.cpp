@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Model_io.h>
+#include <CGAL/MPM/IO/Model_io.h>
 
 #include <boost/crc.hpp>
 

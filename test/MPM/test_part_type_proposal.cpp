@@ -5,11 +5,11 @@
 // synthetic hand, whose true types are known, on the segmented PSB meshes
 // (MPM_PSB_DIR, skipped with a message when absent; only read), the checks
 // of bad segmentations, and `mpm learn --write-annotation`.
-#include <CGAL/MPM/Annotation_io.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include "Tool_test_support.h"
 

@@ -4,8 +4,8 @@
 // every row it should and only finite values. No timing is asserted.
 #include "Io_test_support.h"
 
-#include <CGAL/MPM/Deformation_method.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Baselines/Deformation_method.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <gtest/gtest.h>
 

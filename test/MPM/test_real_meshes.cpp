@@ -5,15 +5,15 @@
 // MPM_DATA_DIR at run time or the MPM_REAL_MESH_DIR define) cut with the
 // example cut files of examples/MPM/data, learned and deformed. Skipped with
 // a message when the data are not installed.
-#include <CGAL/MPM/Annotation_io.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Handle_set.h>
+#include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Mesh_cutting.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Shape_space.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Model/Shape_space.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include "Learned_models.h"
 

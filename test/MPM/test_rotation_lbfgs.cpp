@@ -5,8 +5,8 @@
 // uses it: the same minimum as the local/global steps, in fewer iterations.
 #include "Learned_models.h"
 
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/internal/Rotation_lbfgs.h>
 
 #include <Eigen/Geometry>

@@ -4,7 +4,7 @@
 // The Princeton Segmentation Benchmark's measures against values computed by
 // hand on a strip of four unit squares (eight triangles of area 1/2).
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Segmentation_measures.h>
+#include <CGAL/MPM/Cutting/Segmentation_measures.h>
 
 #include <gtest/gtest.h>
 

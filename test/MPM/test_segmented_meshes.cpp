@@ -7,15 +7,15 @@
 // example must be the user's closed surface again, and the edits must keep
 // it closed and sound. The bounds are the measured figures with a margin
 // (doc/MPM/Real_meshes.md).
-#include <CGAL/MPM/Assembly.h>
-#include <CGAL/MPM/Editing.h>
-#include <CGAL/MPM/Embedding_solver.h>
-#include <CGAL/MPM/Mesh_io.h>
-#include <CGAL/MPM/Part_graph_editing.h>
-#include <CGAL/MPM/Part_graph_io.h>
-#include <CGAL/MPM/Part_type_proposal.h>
-#include <CGAL/MPM/Surface_soundness.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Part_graph_io.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <gtest/gtest.h>
 

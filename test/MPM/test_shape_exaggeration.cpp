@@ -3,7 +3,7 @@
 //
 // Exaggeration by local rotations: a bent tube bends further and stays
 // sound, where doubling the point offsets does not bend it further.
-#include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/internal/Shape_exaggeration.h>
 
 #include "Tube_mesh.h"

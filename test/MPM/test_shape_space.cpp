@@ -1,5 +1,5 @@
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Shape_space.h>
+#include <CGAL/MPM/Model/Shape_space.h>
 
 #include <gtest/gtest.h>
 

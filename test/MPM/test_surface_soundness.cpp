@@ -4,7 +4,7 @@
 // Flipped and inverted faces: a part that turns as a whole flips faces but
 // inverts none; a mirrored part is inside out.
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
 
 #include "Tube_mesh.h"
 

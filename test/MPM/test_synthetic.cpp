@@ -1,8 +1,8 @@
 // The synthetic generators: mesh validity, ground-truth correspondence,
 // determinism, held-out poses, shape spaces and dockings.
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Shape_space.h>
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Model/Shape_space.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <gtest/gtest.h>
 

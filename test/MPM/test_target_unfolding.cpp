@@ -3,9 +3,9 @@
 //
 // Unfolding an edit's target: a fold pushed through a tube is taken out
 // around the fold and nowhere else; a tube bent past a half turn is no fold.
-#include <CGAL/MPM/Editing.h>
+#include <CGAL/MPM/Editing/Editing.h>
 #include <CGAL/MPM/Input_error.h>
-#include <CGAL/MPM/Surface_soundness.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/internal/Target_unfolding.h>
 
 #include "Tube_mesh.h"

@@ -10,11 +10,11 @@
 // 4.1 (correspondence_fitting.cpp), and the repairs of folds and missed
 // extremities (correspondence_repair.cpp).
 
-#include <CGAL/MPM/Dense_correspondence.h>
+#include <CGAL/MPM/Correspondence/Dense_correspondence.h>
 #include <CGAL/MPM/Indexed_mesh.h>
-#include <CGAL/MPM/Part_type.h>
-#include <CGAL/MPM/Shape_space.h>
-#include <CGAL/MPM/Thin_plate_spline.h>
+#include <CGAL/MPM/Model/Part_type.h>
+#include <CGAL/MPM/Model/Shape_space.h>
+#include <CGAL/MPM/Correspondence/Thin_plate_spline.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <CGAL/AABB_segment_primitive.h>

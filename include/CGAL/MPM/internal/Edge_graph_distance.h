@@ -4,7 +4,7 @@
 #define CGAL_MPM_INTERNAL_EDGE_GRAPH_DISTANCE_H
 
 #include <CGAL/MPM/Indexed_mesh.h>
-#include <CGAL/MPM/Part_type.h>
+#include <CGAL/MPM/Model/Part_type.h>
 
 #include <vector>
 

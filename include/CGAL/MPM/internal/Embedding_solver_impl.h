@@ -9,7 +9,7 @@
 // API (embedding_solver.cpp), and the factored vertex block
 // (vertex_block_solver.cpp).
 
-#include <CGAL/MPM/Embedding_solver.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Rotation_lbfgs.h>
 

@@ -5,7 +5,7 @@
 
 // How error messages name things, one way everywhere.
 
-#include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
 
 #include <string>
 

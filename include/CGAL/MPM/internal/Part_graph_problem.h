@@ -8,8 +8,8 @@
 #ifndef CGAL_MPM_INTERNAL_PART_GRAPH_PROBLEM_H
 #define CGAL_MPM_INTERNAL_PART_GRAPH_PROBLEM_H
 
-#include <CGAL/MPM/Embedding_problem.h>
-#include <CGAL/MPM/Morphable_part_model.h>
+#include <CGAL/MPM/Solver/Embedding_problem.h>
+#include <CGAL/MPM/Model/Morphable_part_model.h>
 
 #include <Eigen/Core>
 

@@ -7,8 +7,8 @@
 #ifndef CGAL_MPM_INTERNAL_SEAM_STITCHING_H
 #define CGAL_MPM_INTERNAL_SEAM_STITCHING_H
 
-#include <CGAL/MPM/Docking_rule.h>
-#include <CGAL/MPM/Face_graph_conversion.h>
+#include <CGAL/MPM/Model/Docking_rule.h>
+#include <CGAL/MPM/IO/Face_graph_conversion.h>
 
 #include <map>
 #include <set>

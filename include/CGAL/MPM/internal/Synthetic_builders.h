@@ -5,7 +5,7 @@
 
 // Shared machinery of the synthetic model generators (not part of the API).
 
-#include <CGAL/MPM/Synthetic_model.h>
+#include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <Eigen/Core>
 

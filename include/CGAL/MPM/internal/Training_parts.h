@@ -7,9 +7,9 @@
 // (docking_discovery.cpp), from which learning (learning.cpp) makes the
 // part types, docking sites and rules.
 
-#include <CGAL/MPM/Docking_rule.h>
-#include <CGAL/MPM/Part_type.h>
-#include <CGAL/MPM/learn_morphable_part_model.h>
+#include <CGAL/MPM/Model/Docking_rule.h>
+#include <CGAL/MPM/Model/Part_type.h>
+#include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include <utility>
 #include <vector>

@@ -8,7 +8,7 @@
 // (training_correspondence.cpp) both take them apart.
 
 #include <CGAL/MPM/Indexed_mesh.h>
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/internal/Message_text.h>
 
 #include <map>

@@ -4,7 +4,7 @@
 #define CGAL_MPM_INTERNAL_VERTEX_COMPONENTS_H
 
 #include <CGAL/MPM/Indexed_mesh.h>
-#include <CGAL/MPM/Mesh_io.h>
+#include <CGAL/MPM/IO/Mesh_io.h>
 
 #include <algorithm>
 #include <vector>

@@ -1,0 +1,151 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_FACE_GRAPH_EDITING_H
+#define CGAL_MPM_FACE_GRAPH_EDITING_H
+
+#include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/IO/Face_graph_conversion.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+
+/// \ingroup PkgMPMRef
+/// Cuts the triangle mesh `g` along the cutting lines of `cuts` (vertex
+/// indices in the order of `vertices(g)`, see `vertex_order()`) and writes
+/// the label of each face into `face_labels`, as `cut_mesh()` labels the
+/// regions. Returns the cut's paths and lengths as `cut_mesh()` does.
+///
+/// \tparam FaceGraph a model of `FaceListGraph`
+/// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
+/// Named parameters: `vertex_point_map`.
+template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
+Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceLabelMap face_labels,
+                        const Cutting_options& options = Cutting_options(),
+                        const NamedParameters& np = parameters::default_values())
+{
+  Cutting_result cut = cut_mesh(to_indexed_mesh(g, np), cuts, options, "face graph");
+  std::size_t t = 0;
+  for(auto f : faces(g)) put(face_labels, f, cut.mesh.face_labels[t++]);
+  return cut;
+}
+
+/// \ingroup PkgMPMRef
+/// Fills the empty `g` with training example `example` of `model` as
+/// learned (a part rebuilt by correspondence has its type's triangles) and
+/// writes each face's part label into `face_labels`. The editing functions
+/// below edit this mesh.
+///
+/// \tparam MutableFaceGraph a model of `MutableFaceGraph`
+/// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
+/// Named parameters: `vertex_point_map`.
+template <class MutableFaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
+void copy_training_example(const Morphable_part_model& model, int example, MutableFaceGraph& g,
+                           FaceLabelMap face_labels, const NamedParameters& np = parameters::default_values())
+{
+  if(example < 0 || example >= static_cast<int>(model.examples.size()))
+    throw Input_error("model", "example " + std::to_string(example),
+                      "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
+  const Training_example& e = model.examples[std::size_t(example)];
+  const auto added = copy_to_face_graph(e.mesh, g, np);
+  for(std::size_t t = 0; t < added.size(); ++t) put(face_labels, added[t], e.face_labels[t]);
+}
+
+namespace internal {
+
+// Solves an editing problem of the example `g` holds and writes the result
+// into `g`; handles are (vertex descriptor, target point) pairs.
+template <class FaceGraph, class HandleRange, class NamedParameters>
+Edit_result edit_face_graph(const Morphable_part_model& model, const Embedding_problem& problem, FaceGraph& g,
+                            const HandleRange& handles, const Edit_options& options, const NamedParameters& np)
+{
+  const auto index = vertex_order(g);
+  Handle_set h;
+  h.targets.resize(static_cast<Eigen::Index>(std::size(handles)), 3);
+  for(const auto& [vertex, target] : handles) {
+    const auto it = index.find(vertex);
+    if(it == index.end())
+      throw Input_error(options.handles_source, "handle " + std::to_string(h.vertices.size()),
+                        "its vertex is not a vertex of the face graph");
+    h.targets.row(Eigen::Index(h.vertices.size())) << CGAL::to_double(target.x()), CGAL::to_double(target.y()),
+      CGAL::to_double(target.z());
+    h.vertices.push_back(it->second);
+  }
+  Edit_result r = solve_edit(model, problem, h, options);
+  write_positions(r.mesh.points, g, np);
+  return r;
+}
+
+} // namespace internal
+
+/// \ingroup PkgMPMRef
+/// Free-form deformation (`make_deformation_problem()`) of training example
+/// `options.example`, held in `g` (see `copy_training_example()`): each
+/// handle, a pair of a vertex descriptor of `g` and its target point, pulls
+/// its vertex; the result is written into `g` through its vertex point map.
+///
+/// \tparam FaceGraph a model of `FaceListGraph` with as many vertices as the example
+/// \tparam HandleRange a range of `std::pair<vertex_descriptor, Point>`, `Point` with `x()`, `y()`, `z()`
+/// Named parameters: `vertex_point_map`.
+template <class FaceGraph, class HandleRange, class NamedParameters = parameters::Default_named_parameters>
+Edit_result deform(const Morphable_part_model& model, FaceGraph& g, const HandleRange& handles,
+                   const Edit_options& options = Edit_options(), const NamedParameters& np = parameters::default_values())
+{
+  return internal::edit_face_graph(model, make_deformation_problem(model, options.example), g, handles, options, np);
+}
+
+/// \ingroup PkgMPMRef
+/// Partial symmetrization (`make_symmetrization_problem()`) of training
+/// example `options.example`, held in `g`; the result is written into `g`.
+template <class FaceGraph, class NamedParameters = parameters::Default_named_parameters>
+Edit_result symmetrize(const Morphable_part_model& model, FaceGraph& g,
+                       const Symmetrization_options& symmetrization = Symmetrization_options(),
+                       const Edit_options& options = Edit_options(),
+                       const NamedParameters& np = parameters::default_values())
+{
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using Point = typename boost::property_traits<typename GetVertexPointMap<FaceGraph>::type>::value_type;
+  return internal::edit_face_graph(model, make_symmetrization_problem(model, options.example, symmetrization), g,
+                                   std::vector<std::pair<vertex_descriptor, Point>>(), options, np);
+}
+
+/// \ingroup PkgMPMRef
+/// Caricature by `factor` (`make_caricature_problem()`) of training example
+/// `options.example`, held in `g`; the result is written into `g`.
+template <class FaceGraph, class NamedParameters = parameters::Default_named_parameters>
+Edit_result caricature(const Morphable_part_model& model, double factor, FaceGraph& g,
+                       const Edit_options& options = Edit_options(),
+                       const NamedParameters& np = parameters::default_values())
+{
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using Point = typename boost::property_traits<typename GetVertexPointMap<FaceGraph>::type>::value_type;
+  return internal::edit_face_graph(model, make_caricature_problem(model, factor, options.example), g,
+                                   std::vector<std::pair<vertex_descriptor, Point>>(), options, np);
+}
+
+/// \ingroup PkgMPMRef
+/// Assembles and embeds `graph` (`assemble()`) into the empty `g` and writes the part graph node of each face into `face_nodes`
+/// (its part type is `graph.nodes[node].type`).
+///
+/// \tparam MutableFaceGraph a model of `MutableFaceGraph`
+/// \tparam FaceNodeMap a `WritablePropertyMap` from the face descriptor to `int`
+/// Named parameters: `vertex_point_map`.
+template <class MutableFaceGraph, class FaceNodeMap, class NamedParameters = parameters::Default_named_parameters>
+Assembly assemble(const Morphable_part_model& model, const Part_graph& graph, MutableFaceGraph& g,
+                  FaceNodeMap face_nodes, const Assembly_options& options = Assembly_options(),
+                  const NamedParameters& np = parameters::default_values())
+{
+  Assembly a = assemble(model, graph, options);
+  const auto added = copy_to_face_graph(a.mesh, g, np);
+  for(std::size_t t = 0; t < added.size(); ++t) put(face_nodes, added[t], a.face_nodes[t]);
+  return a;
+}
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,53 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_MORPHABLE_PART_MODEL_H
+#define CGAL_MPM_MORPHABLE_PART_MODEL_H
+
+#include <CGAL/MPM/Model/Docking_rule.h>
+#include <CGAL/MPM/Indexed_mesh.h>
+#include <CGAL/MPM/Model/Model_parameters.h>
+#include <CGAL/MPM/Model/Part_graph.h>
+#include <CGAL/MPM/Model/Part_type.h>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+
+/// \ingroup PkgMPMRef
+/// One training mesh and its part graph.
+struct Training_example
+{
+  std::string name;    ///< where it came from (file name)
+  Indexed_mesh mesh;   ///< the rest geometry
+  std::vector<int> face_labels; ///< per-face part label
+  Part_graph graph;    ///< its instances and dockings
+};
+
+/// \ingroup PkgMPMRef
+/// A learned morphable part model: part types with their shape spaces,
+/// docking rules with the shape spaces of their pair geometry (together the
+/// grammar, see `Shape_grammar`), and the training examples as part graphs.
+struct Morphable_part_model
+{
+  /// The parameters, with `sigma_sub` and `docking_radius` resolved; a
+  /// negative `sigma_bound` stays automatic (resolved per cluster when solving).
+  Model_parameters parameters;
+  std::vector<Part_type> types;     ///< part types
+  std::vector<Docking_rule> rules;  ///< observed docking rules
+  std::vector<Training_example> examples; ///< the training meshes
+
+  /// Index of the type called `name`, or -1.
+  int find_type(const std::string& name) const
+  {
+    for(std::size_t i = 0; i < types.size(); ++i)
+      if(types[i].name == name) return static_cast<int>(i);
+    return -1;
+  }
+};
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif
