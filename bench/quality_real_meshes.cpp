@@ -16,6 +16,7 @@
 #include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
 #include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
@@ -120,8 +121,7 @@ std::vector<int> set_tip_handles(const Morphable_part_model& model, const Embedd
                                  Embedding_solver& solver)
 {
   const Training_example& ex = model.examples.front();
-  std::vector<int> degree(ex.graph.nodes.size(), 0);
-  for(const Part_edge& e : ex.graph.edges) ++degree[e.first], ++degree[e.second];
+  const Part_adjacency_graph g = adjacency_graph(ex.graph);
   int root = 0;
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
     if(ex.graph.nodes[i].vertices.size() > ex.graph.nodes[root].vertices.size()) root = int(i);
@@ -132,7 +132,7 @@ std::vector<int> set_tip_handles(const Morphable_part_model& model, const Embedd
   std::vector<Eigen::RowVector3d> targets;
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
   {
-    if(degree[i] != 1 || int(i) == root) continue;
+    if(boost::out_degree(i, g) != 1 || int(i) == root) continue;
     const std::vector<int>& v = ex.graph.nodes[i].vertices;
     int tip = v.front();
     for(int x : v)
@@ -184,14 +184,14 @@ Insertions insert_into_every_chain(Morphable_part_model model)
   Insertions r;
   add_repetition_rules(model);
   const Part_graph example = part_graph_of_example(model, 0);
-  std::vector<int> degree(example.nodes.size(), 0);
-  for(const Part_edge& e : example.edges) ++degree[e.first], ++degree[e.second];
+  const Part_adjacency_graph g = adjacency_graph(example);
+  const auto degree = [&](int node) { return boost::out_degree(node, g); };
   for(std::size_t k = 0; k < example.edges.size(); ++k)
   {
     // A chain: a tip docked to a segment that docks to one more part (the
     // abdomen of an ant, docked to the thorax alone, is no chain).
     const Part_edge& e = example.edges[k];
-    const bool chain = (degree[e.first] == 1 && degree[e.second] == 2) || (degree[e.second] == 1 && degree[e.first] == 2);
+    const bool chain = (degree(e.first) == 1 && degree(e.second) == 2) || (degree(e.second) == 1 && degree(e.first) == 2);
     if(!chain) continue;
     ++r.tried;
     try

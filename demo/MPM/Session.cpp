@@ -8,6 +8,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/IO/Model_io.h>
+#include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/Part_colors.h>
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
@@ -18,10 +19,11 @@
 #include <QEventLoop>
 #include <QTimer>
 
+#include <boost/graph/breadth_first_search.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <map>
 #include <unordered_map>
 
@@ -41,6 +43,22 @@ double milliseconds_since(std::chrono::steady_clock::time_point start)
 constexpr int arap_iterations_per_chunk = 10;
 constexpr int arap_iterations_per_request = 200;
 constexpr double arap_tolerance = 1e-4;
+
+// Records the docking by which a breadth-first search reaches each node.
+class Reached_by_recorder : public boost::default_bfs_visitor
+{
+public:
+  explicit Reached_by_recorder(std::vector<int>& reached_by) : reached_by_(&reached_by) {}
+
+  template <class Edge, class Graph>
+  void tree_edge(const Edge& e, const Graph& g) const
+  {
+    (*reached_by_)[boost::target(e, g)] = g[e];
+  }
+
+private:
+  std::vector<int>* reached_by_; // a pointer: Boost.Graph copies its visitor
+};
 
 } // namespace
 
@@ -547,24 +565,9 @@ int Session::parent_edge(int node) const
     throw MPM::Input_error("part graph", "part " + std::to_string(node),
                            "does not exist (there are " + std::to_string(n) + " parts)");
   // Breadth-first from the root: the edge each node was reached by.
-  std::vector<int> reached_by(n, -2);
-  std::deque<int> queue{root()};
-  reached_by[root()] = -1;
-  while(!queue.empty())
-  {
-    const int a = queue.front();
-    queue.pop_front();
-    for(std::size_t e = 0; e < edit_graph_.edges.size(); ++e)
-    {
-      const MPM::Part_edge& edge = edit_graph_.edges[e];
-      const int b = edge.first == a ? edge.second : edge.second == a ? edge.first : -1;
-      if(b >= 0 && reached_by[b] == -2)
-      {
-        reached_by[b] = int(e);
-        queue.push_back(b);
-      }
-    }
-  }
+  std::vector<int> reached_by(n, -1);
+  boost::breadth_first_search(MPM::adjacency_graph(edit_graph_), std::size_t(root()),
+                              boost::visitor(Reached_by_recorder(reached_by)));
   if(reached_by[node] < 0)
     throw MPM::Input_error("part graph", "part " + std::to_string(node),
                            "is the root or not connected to it: pick a part that hangs from another one");
@@ -640,11 +643,11 @@ void Session::reset_graph()
 std::vector<std::string> Session::describe_parts() const
 {
   std::vector<std::string> lines;
+  const MPM::Part_adjacency_graph g = MPM::adjacency_graph(edit_graph_);
   for(std::size_t n = 0; n < edit_graph_.nodes.size(); ++n)
   {
     std::string line = "part " + std::to_string(n) + ": " + model_.types[edit_graph_.nodes[n].type].name + ", docked to";
-    for(const MPM::Part_edge& e : edit_graph_.edges)
-      if(e.first == int(n) || e.second == int(n)) line += " " + std::to_string(e.first == int(n) ? e.second : e.first);
+    for(auto [m, end] = boost::adjacent_vertices(n, g); m != end; ++m) line += " " + std::to_string(*m);
     if(int(n) == root()) line += " (root)";
     lines.push_back(line);
   }

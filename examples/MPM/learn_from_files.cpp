@@ -73,7 +73,7 @@ int main(int argc, char** argv)
               << " rules; saved " << fs::path(model_path).filename().string() << "\n";
 
     // The grammar: docking sites are its vertices, rules its edges.
-    const MPM::Shape_grammar grammar(model);
+    const MPM::Shape_grammar& grammar = model.grammar();
     std::cout << "grammar: " << grammar.number_of_sites() << " docking sites, " << grammar.number_of_rules()
               << " rules\n";
     const auto edges = boost::edges(grammar.graph());

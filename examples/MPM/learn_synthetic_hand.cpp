@@ -24,7 +24,7 @@ int main(int argc, char** argv)
               << 100 * type.space.explained_variance(type.space.number_of_modes()) << "% of the variance, "
               << type.sites.size() << " docking sites\n";
 
-  const MPM::Shape_grammar grammar(model);
+  const MPM::Shape_grammar& grammar = model.grammar();
   std::cout << "grammar: " << grammar.number_of_sites() << " docking sites, " << grammar.number_of_rules()
             << " rules\n";
 

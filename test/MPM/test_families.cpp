@@ -82,7 +82,7 @@ TEST_P(Family_learning, subspaces_modes_grammar_and_round_trip)
     expected.insert({std::min(c.first, c.second), std::max(c.first, c.second), c.boundary});
   EXPECT_EQ(learned, expected);
   // And the grammar exactly the generator's rules.
-  const Shape_grammar grammar(model);
+  const Shape_grammar& grammar = model.grammar();
   EXPECT_EQ(static_cast<int>(grammar.number_of_rules()), truth.expected_rules);
   for(const Part_edge& e : graph.edges)
   {

@@ -128,7 +128,7 @@ TEST(Learning, boundary_docked_strip)
       EXPECT_LT((x.row(v) - strip.mesh.points.row(node.vertices[v])).norm(), 1e-8);
   }
 
-  const Shape_grammar grammar(model);
+  const Shape_grammar& grammar = model.grammar();
   EXPECT_EQ(grammar.number_of_sites(), 2u);
   EXPECT_EQ(grammar.number_of_rules(), 1u);
   EXPECT_TRUE(grammar.allows(rule.first, rule.second));

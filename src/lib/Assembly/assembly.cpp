@@ -2,10 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Assembly/Assembly.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/internal/Elapsed_time.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 
+#include <boost/graph/breadth_first_search.hpp>
 #include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
@@ -14,7 +16,6 @@
 #include <set>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <map>
 
 namespace CGAL {
@@ -122,6 +123,36 @@ Rigid_motion place_neighbour(const Docking_rule& rule, const Part_edge& e, int u
   return m;
 }
 
+// Places each node next to its parent in the breadth-first tree from the
+// root, so that each docks to an already placed part.
+class Placement_visitor : public boost::default_bfs_visitor
+{
+public:
+  using edge_descriptor = boost::graph_traits<Part_adjacency_graph>::edge_descriptor;
+
+  Placement_visitor(const Morphable_part_model& model, const Part_graph& graph,
+                    const std::vector<Point_matrix>& targets, std::vector<Rigid_motion>& motion, Point_matrix& placed_u)
+    : model_(model), graph_(graph), targets_(targets), motion_(motion), placed_u_(placed_u)
+  {}
+
+  void examine_vertex(std::size_t u, const Part_adjacency_graph&) { placed_u_ = motion_[u].apply(targets_[u]); }
+
+  void tree_edge(const edge_descriptor& d, const Part_adjacency_graph& g)
+  {
+    const Part_edge& e = graph_.edges[g[d]];
+    const std::size_t v = boost::target(d, g);
+    motion_[v] = place_neighbour(model_.rules[e.rule], e, int(boost::source(d, g)), placed_u_, targets_[v]);
+  }
+
+private:
+  // References: Boost.Graph copies its visitor.
+  const Morphable_part_model& model_;
+  const Part_graph& graph_;
+  const std::vector<Point_matrix>& targets_;
+  std::vector<Rigid_motion>& motion_;
+  Point_matrix& placed_u_; // the part whose dockings are examined, placed
+};
+
 } // namespace
 
 Assembly_options training_assembly_options(const Morphable_part_model& model, int example)
@@ -175,40 +206,14 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
 
   // Rigid placement: given, or breadth-first from the root along the dockings.
   std::vector<Rigid_motion> motion(n);
-  std::vector<bool> placed(n, false);
   std::vector<Point_matrix> placed_targets(n);
   if(!options.placements.empty())
-    for(int i = 0; i < n; ++i)
-    {
-      motion[i] = compose(options.placements[i], given_frame[i].inverse());
-      placed[i] = true;
-    }
+    for(int i = 0; i < n; ++i) motion[i] = compose(options.placements[i], given_frame[i].inverse());
   else
   {
-    std::vector<std::vector<int>> incident(n);
-    for(std::size_t k = 0; k < graph.edges.size(); ++k)
-    {
-      incident[graph.edges[k].first].push_back(int(k));
-      incident[graph.edges[k].second].push_back(int(k));
-    }
-    const int root = options.root >= 0 ? options.root : 0;
-    std::deque<int> queue = {root};
-    placed[root] = true;
-    while(!queue.empty())
-    {
-      const int u = queue.front();
-      queue.pop_front();
-      const Point_matrix placed_u = motion[u].apply(targets[u]);
-      for(int k : incident[u])
-      {
-        const Part_edge& e = graph.edges[k];
-        const int v = e.first == u ? e.second : e.first;
-        if(placed[v]) continue;
-        motion[v] = place_neighbour(model.rules[e.rule], e, u, placed_u, targets[v]);
-        placed[v] = true;
-        queue.push_back(v);
-      }
-    }
+    Point_matrix placed_u;
+    boost::breadth_first_search(adjacency_graph(graph), std::size_t(options.root >= 0 ? options.root : 0),
+                                boost::visitor(Placement_visitor(model, graph, targets, motion, placed_u)));
   }
   for(int i = 0; i < n; ++i) placed_targets[i] = motion[i].apply(targets[i]);
 

@@ -305,10 +305,11 @@ Docking_rule derive_docking_rule(const Morphable_part_model& model, const Site_r
 
 int add_derived_rule(Morphable_part_model& model, const Site_ref& a, const Site_ref& b)
 {
-  const std::vector<int> existing = Shape_grammar(model).rules_between(a, b);
-  if(!existing.empty()) return *std::min_element(existing.begin(), existing.end());
+  const std::vector<int> existing = model.grammar().rules_between(a, b);
+  if(!existing.empty()) return existing.front();
   Docking_rule rule = derive_docking_rule(model, a, b);
   model.rules.push_back(std::move(rule));
+  model.update_grammar();
   return static_cast<int>(model.rules.size()) - 1;
 }
 
@@ -328,7 +329,7 @@ Docking_rule derive_repetition_rule(const Morphable_part_model& model, int type_
 std::vector<int> add_repetition_rules(Morphable_part_model& model)
 {
   std::vector<int> added;
-  const Shape_grammar grammar(model);
+  const Shape_grammar& grammar = model.grammar();
   for(int t = 0; t < int(model.types.size()); ++t)
   {
     const Part_type& type = model.types[t];
@@ -344,6 +345,7 @@ std::vector<int> add_repetition_rules(Morphable_part_model& model)
     added.push_back(static_cast<int>(model.rules.size()));
     model.rules.push_back(std::move(rule));
   }
+  if(!added.empty()) model.update_grammar();
   return added;
 }
 

@@ -3,10 +3,13 @@
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/Assembly/Assembly.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Model/Shape_grammar.h>
 #include <CGAL/MPM/internal/Message_text.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
+
+#include <boost/graph/breadth_first_search.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -35,13 +38,6 @@ void check_node(const Part_graph& graph, int node, const char* what)
                       "does not exist (the graph has " + std::to_string(graph.nodes.size()) + " nodes)");
 }
 
-std::vector<int> sorted_unique(std::vector<int> v)
-{
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  return v;
-}
-
 // The site node `node` occupies on edge `e`.
 Site_ref site_on_edge(const Morphable_part_model& model, const Part_edge& e, int node)
 {
@@ -67,6 +63,18 @@ Part_edge oriented_edge(const Morphable_part_model& model, int rule, int a, cons
   return e;
 }
 
+// The dockings by which the branch at `node` (`branch`, sorted) hangs from
+// the rest of the graph: all lead from `node`, as the rest reaches every
+// other node of the branch only through it.
+std::vector<int> hanging_dockings(const Part_graph& graph, int node, const std::vector<int>& branch)
+{
+  const Part_adjacency_graph g = adjacency_graph(graph);
+  std::vector<int> hanging;
+  for(auto [e, end] = boost::out_edges(node, g); e != end; ++e)
+    if(!std::binary_search(branch.begin(), branch.end(), int(boost::target(*e, g)))) hanging.push_back(g[*e]);
+  return hanging;
+}
+
 } // namespace
 
 std::vector<int> free_sites(const Morphable_part_model& model, const Part_graph& graph, int node)
@@ -75,11 +83,7 @@ std::vector<int> free_sites(const Morphable_part_model& model, const Part_graph&
   const std::map<Site_ref, int> capacity = observed_site_degrees(model);
   const int type = graph.nodes[node].type;
   std::vector<int> used(model.types[type].sites.size(), 0);
-  for(const Part_edge& e : graph.edges)
-  {
-    if(e.first == node) ++used[model.rules[e.rule].first.site];
-    if(e.second == node) ++used[model.rules[e.rule].second.site];
-  }
+  for(int k : incident_dockings(adjacency_graph(graph), node)) ++used[site_on_edge(model, graph.edges[k], node).site];
   std::vector<int> free;
   for(std::size_t s = 0; s < used.size(); ++s)
     if(used[s] < capacity.at({type, int(s)})) free.push_back(int(s));
@@ -89,24 +93,22 @@ std::vector<int> free_sites(const Morphable_part_model& model, const Part_graph&
 std::vector<Docking_option> free_dockings(const Morphable_part_model& model, const Part_graph& graph,
                                           const Site_ref& other)
 {
-  const Shape_grammar grammar(model);
+  const Shape_grammar& grammar = model.grammar();
   std::vector<Docking_option> options;
   for(int n = 0; n < int(graph.nodes.size()); ++n)
     for(int s : free_sites(model, graph, n))
-      for(int r : sorted_unique(grammar.rules_between({graph.nodes[n].type, s}, other)))
+      for(int r : grammar.rules_between({graph.nodes[n].type, s}, other))
         options.push_back({n, s, r});
   return options;
 }
 
 int root_node(const Part_graph& graph)
 {
-  std::vector<int> degree(graph.nodes.size(), 0);
-  for(const Part_edge& e : graph.edges)
-  {
-    ++degree[e.first];
-    ++degree[e.second];
-  }
-  return graph.nodes.empty() ? -1 : int(std::max_element(degree.begin(), degree.end()) - degree.begin());
+  const Part_adjacency_graph g = adjacency_graph(graph);
+  int root = -1;
+  for(int v = 0; v < int(graph.nodes.size()); ++v)
+    if(root < 0 || boost::out_degree(v, g) > boost::out_degree(root, g)) root = v;
+  return root;
 }
 
 int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edge, int type)
@@ -118,7 +120,7 @@ int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edg
   const Part_edge old = graph.edges[edge];
   const int a = old.first, b = old.second;
   const Site_ref sa = model.rules[old.rule].first, sb = model.rules[old.rule].second;
-  const Shape_grammar grammar(model);
+  const Shape_grammar& grammar = model.grammar();
   std::vector<int> candidates;
   if(type >= 0) candidates.push_back(type);
   else
@@ -136,8 +138,8 @@ int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edg
       for(int tb = 0; tb < sites; ++tb)
       {
         if(ta == tb) continue;
-        const std::vector<int> r1 = sorted_unique(grammar.rules_between(sa, {t, ta}));
-        const std::vector<int> r2 = sorted_unique(grammar.rules_between({t, tb}, sb));
+        const std::vector<int> r1 = grammar.rules_between(sa, {t, ta});
+        const std::vector<int> r2 = grammar.rules_between({t, tb}, sb);
         if(r1.empty() || r2.empty()) continue;
         Part_node node;
         node.type = t;
@@ -195,9 +197,7 @@ std::vector<int> remove_nodes(Part_graph& graph, const std::vector<int>& nodes)
 std::vector<int> remove_segment(const Morphable_part_model& model, Part_graph& graph, int node)
 {
   check_node(graph, node, "node");
-  std::vector<int> incident;
-  for(std::size_t k = 0; k < graph.edges.size(); ++k)
-    if(graph.edges[k].first == node || graph.edges[k].second == node) incident.push_back(int(k));
+  const std::vector<int> incident = incident_dockings(adjacency_graph(graph), node);
   if(incident.size() != 2)
     throw Input_error(source, node_element(model, graph, node),
                       "has " + std::to_string(incident.size()) +
@@ -209,7 +209,7 @@ std::vector<int> remove_segment(const Morphable_part_model& model, Part_graph& g
   if(p == q)
     throw Input_error(source, node_element(model, graph, node), "both its dockings lead to node " + std::to_string(p));
   const Site_ref sp = site_on_edge(model, e1, p), sq = site_on_edge(model, e2, q);
-  const std::vector<int> rules = sorted_unique(Shape_grammar(model).rules_between(sp, sq));
+  const std::vector<int> rules = model.grammar().rules_between(sp, sq);
   if(rules.empty())
     throw Input_error(source, node_element(model, graph, node),
                       "its neighbours cannot be reconnected: no rule docks " + site_text(model, sp) + " to " +
@@ -223,29 +223,14 @@ std::vector<int> branch_nodes(const Part_graph& graph, int node, int root)
   check_node(graph, node, "node");
   check_node(graph, root, "root");
   if(node == root) throw Input_error(source, "node " + std::to_string(node), "is the root: its branch is the whole graph");
-  std::vector<std::vector<int>> neighbours(graph.nodes.size());
-  for(const Part_edge& e : graph.edges)
-  {
-    neighbours[e.first].push_back(e.second);
-    neighbours[e.second].push_back(e.first);
-  }
-  std::vector<bool> reached(graph.nodes.size(), false);
-  reached[root] = reached[node] = true; // `node` blocks the way
-  std::vector<int> stack = {root};
-  while(!stack.empty())
-  {
-    const int v = stack.back();
-    stack.pop_back();
-    for(int w : neighbours[v])
-      if(!reached[w])
-      {
-        reached[w] = true;
-        stack.push_back(w);
-      }
-  }
+  const Part_adjacency_graph g = adjacency_graph(graph);
+  std::vector<boost::default_color_type> colour(graph.nodes.size(), boost::white_color);
+  colour[node] = boost::black_color; // `node` blocks the way
+  boost::breadth_first_visit(
+    g, root, boost::color_map(boost::make_iterator_property_map(colour.begin(), boost::get(boost::vertex_index, g))));
   std::vector<int> branch;
   for(std::size_t i = 0; i < graph.nodes.size(); ++i)
-    if(!reached[i] || int(i) == node) branch.push_back(int(i));
+    if(colour[i] == boost::white_color || int(i) == node) branch.push_back(int(i));
   return branch;
 }
 
@@ -261,9 +246,7 @@ int duplicate_branch(const Morphable_part_model& model, Part_graph& graph, int n
   const std::vector<int> branch = branch_nodes(graph, node, root);
   std::vector<int> copy_of(graph.nodes.size(), -1);
   for(int v : branch) copy_of[v] = 0;
-  std::vector<int> attaching;
-  for(std::size_t k = 0; k < graph.edges.size(); ++k)
-    if((copy_of[graph.edges[k].first] == 0) != (copy_of[graph.edges[k].second] == 0)) attaching.push_back(int(k));
+  const std::vector<int> attaching = hanging_dockings(graph, node, branch);
   if(attaching.size() != 1)
     throw Input_error(source, node_element(model, graph, node),
                       "its branch hangs by " + std::to_string(attaching.size()) + " dockings; a duplicated branch needs one");
@@ -276,10 +259,10 @@ int duplicate_branch(const Morphable_part_model& model, Part_graph& graph, int n
                         "site " + std::to_string(target_site) + " is not a free site of it");
     sites = {target_site};
   }
-  const Shape_grammar grammar(model);
+  const Shape_grammar& grammar = model.grammar();
   for(int s : sites)
   {
-    const std::vector<int> rules = sorted_unique(grammar.rules_between({graph.nodes[target].type, s}, hanging));
+    const std::vector<int> rules = grammar.rules_between({graph.nodes[target].type, s}, hanging);
     if(rules.empty()) continue;
     const std::size_t first_copy = graph.nodes.size();
     for(int v : branch)
@@ -313,13 +296,13 @@ int close_cycle(const Morphable_part_model& model, Part_graph& graph, int a, int
   check_node(graph, a, "node");
   check_node(graph, b, "node");
   if(a == b) throw Input_error(source, node_element(model, graph, a), "cannot dock to itself");
-  const Shape_grammar grammar(model);
+  const Shape_grammar& grammar = model.grammar();
   std::vector<Part_edge> candidates;
   for(int sa : free_sites(model, graph, a))
     for(int sb : free_sites(model, graph, b))
     {
       const Site_ref ra{graph.nodes[a].type, sa}, rb{graph.nodes[b].type, sb};
-      for(int r : sorted_unique(grammar.rules_between(ra, rb)))
+      for(int r : grammar.rules_between(ra, rb))
       {
         Part_graph trial = graph;
         trial.edges.push_back(oriented_edge(model, r, a, ra, b));
@@ -437,19 +420,9 @@ Part_graph random_part_graph(const Morphable_part_model& model, const Part_graph
         const int v = uniform_index(rng, n);
         if(v == root) continue;
         const std::vector<int> branch = branch_nodes(next, v, root);
-        Site_ref hanging;
-        int attaching = 0;
-        for(const Part_edge& e : next.edges)
-        {
-          const bool in1 = std::binary_search(branch.begin(), branch.end(), e.first);
-          const bool in2 = std::binary_search(branch.begin(), branch.end(), e.second);
-          if(in1 != in2)
-          {
-            ++attaching;
-            hanging = site_on_edge(model, e, in1 ? e.first : e.second);
-          }
-        }
-        if(attaching != 1) continue;
+        const std::vector<int> attaching = hanging_dockings(next, v, branch);
+        if(attaching.size() != 1) continue;
+        const Site_ref hanging = site_on_edge(model, next.edges[attaching[0]], v);
         std::vector<Docking_option> where = free_dockings(model, next, hanging);
         if(where.empty()) continue;
         const Docking_option& o = where[uniform_index(rng, int(where.size()))];

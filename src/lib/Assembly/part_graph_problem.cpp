@@ -6,6 +6,7 @@
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Model/Part_adjacency_graph.h>
 
 #include <Eigen/SVD>
 
@@ -475,22 +476,18 @@ Embedding_problem make_part_graph_problem(const Morphable_part_model& model, con
   }
 
   // Neighbouring instances of one type: docked to each other or to a common part.
-  std::vector<std::set<int>> neighbours(graph.nodes.size());
-  for(const Part_edge& e : graph.edges)
-  {
-    neighbours[e.first].insert(e.second);
-    neighbours[e.second].insert(e.first);
-  }
+  const Part_adjacency_graph g = adjacency_graph(graph);
   std::set<std::pair<int, int>> coupled;
-  for(std::size_t a = 0; a < graph.nodes.size(); ++a)
-    for(int b : neighbours[a])
+  const auto couple = [&](int a, int c) {
+    if(c != a && graph.nodes[c].type == graph.nodes[a].type &&
+       model.types[graph.nodes[a].type].space.number_of_modes() > 0)
+      coupled.insert({std::min(a, c), std::max(a, c)});
+  };
+  for(int a = 0; a < int(graph.nodes.size()); ++a)
+    for(auto [b, b_end] = boost::adjacent_vertices(a, g); b != b_end; ++b)
     {
-      std::set<int> near = neighbours[b];
-      near.insert(b);
-      for(int c : near)
-        if(c != int(a) && graph.nodes[c].type == graph.nodes[a].type &&
-           model.types[graph.nodes[a].type].space.number_of_modes() > 0)
-          coupled.insert({std::min<int>(a, c), std::max<int>(a, c)});
+      couple(a, int(*b));
+      for(auto [c, c_end] = boost::adjacent_vertices(*b, g); c != c_end; ++c) couple(a, int(*c));
     }
   problem.coupled_clusters.assign(coupled.begin(), coupled.end());
   return problem;

@@ -570,6 +570,7 @@ Morphable_part_model deserialize_model(const std::string& bytes, const std::stri
   Reader reader(payload, std::size_t(length), source);
   Morphable_part_model model = model_of(reader);
   Model_checker(model, source).check();
+  model.update_grammar();
   return model;
 }
 

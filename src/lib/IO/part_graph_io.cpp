@@ -2,10 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/Model/Shape_grammar.h>
 #include <CGAL/MPM/internal/Atomic_file.h>
 #include <CGAL/MPM/internal/Json_reader.h>
 #include <CGAL/MPM/internal/Message_text.h>
+
+#include <boost/graph/connected_components.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -94,7 +97,6 @@ void validate_part_graph(const Morphable_part_model& model, const Part_graph& gr
   }
   const std::map<Site_ref, int> capacity = observed_site_degrees(model);
   std::map<std::pair<int, int>, std::vector<int>> edges_at_site; // (node, site) -> edges
-  std::vector<std::vector<int>> neighbours(n);
   for(std::size_t k = 0; k < graph.edges.size(); ++k)
   {
     const Part_edge& e = graph.edges[k];
@@ -132,8 +134,6 @@ void validate_part_graph(const Morphable_part_model& model, const Part_graph& gr
                         (limit == 1 ? std::string(" (a docking site carries one docking)")
                                     : " (at most " + std::to_string(limit) + " were observed)"));
     }
-    neighbours[e.first].push_back(e.second);
-    neighbours[e.second].push_back(e.first);
   }
   // Seams close consistently: the shared-vertex classes never identify two
   // local vertices of one node (a cycle of boundary dockings whose seams do
@@ -174,22 +174,10 @@ void validate_part_graph(const Morphable_part_model& model, const Part_graph& gr
     }
   }
 
-  std::vector<bool> seen(n, false);
-  std::vector<int> stack = {0};
-  seen[0] = true;
-  while(!stack.empty())
-  {
-    const int v = stack.back();
-    stack.pop_back();
-    for(int w : neighbours[v])
-      if(!seen[w])
-      {
-        seen[w] = true;
-        stack.push_back(w);
-      }
-  }
+  std::vector<int> component(n);
+  boost::connected_components(adjacency_graph(graph), component.data());
   for(int i = 0; i < n; ++i)
-    if(!seen[i])
+    if(component[i] != component[0])
       fail(node_text(model, graph, i), "is not connected to node 0 (a part graph is one assembly)");
 }
 
@@ -301,9 +289,7 @@ private:
           reader_.fail(element, "part type " + quoted(model_.types[s.type].name) + " has no site " +
                                   std::to_string(s.site) + " (it has " +
                                   std::to_string(model_.types[s.type].sites.size()) + ")");
-      std::vector<int> rules = Shape_grammar(model_).rules_between(a, b);
-      std::sort(rules.begin(), rules.end());
-      rules.erase(std::unique(rules.begin(), rules.end()), rules.end());
+      const std::vector<int> rules = model_.grammar().rules_between(a, b);
       if(rules.empty())
         reader_.fail(element, "is not a docking of the grammar: no rule docks " + site_text(model_, a) + " to " +
                                 site_text(model_, b));

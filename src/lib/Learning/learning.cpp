@@ -588,6 +588,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
     }
     model.examples.push_back(std::move(example));
   }
+  model.update_grammar();
   progress("done", 1.);
   return model;
 }

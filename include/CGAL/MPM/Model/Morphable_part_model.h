@@ -9,11 +9,14 @@
 #include <CGAL/MPM/Model/Part_graph.h>
 #include <CGAL/MPM/Model/Part_type.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace MPM {
+
+class Shape_grammar;
 
 /// \ingroup PkgMPMRef
 /// One training mesh and its part graph.
@@ -29,6 +32,8 @@ struct Training_example
 /// A learned morphable part model: part types with their shape spaces,
 /// docking rules with the shape spaces of their pair geometry (together the
 /// grammar, see `Shape_grammar`), and the training examples as part graphs.
+/// Learning and reading a model build its grammar; code that changes the
+/// sites of `types` or the `rules` calls `update_grammar()` after.
 struct Morphable_part_model
 {
   /// The parameters, with `sigma_sub` and `docking_radius` resolved; a
@@ -45,6 +50,18 @@ struct Morphable_part_model
       if(types[i].name == name) return static_cast<int>(i);
     return -1;
   }
+
+  /// The grammar of `types`' sites and `rules`, built once by
+  /// `update_grammar()` (copies of the model share it). Throws
+  /// `std::logic_error` when sites or rules changed since.
+  const Shape_grammar& grammar() const;
+  /// Builds `grammar()` from the current sites and rules.
+  void update_grammar();
+
+private:
+  // Shared and immutable, so that copying a model copies no graph; a
+  // pointer, so that this header does not pull in Boost.Graph.
+  std::shared_ptr<const Shape_grammar> grammar_;
 };
 
 } // namespace MPM

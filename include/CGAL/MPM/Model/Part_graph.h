@@ -42,6 +42,7 @@ struct Part_edge
 
 /// \ingroup PkgMPMRef
 /// A part graph (an assembly): instances as nodes, dockings as edges.
+/// `adjacency_graph()` gives it to Boost.Graph's algorithms.
 struct Part_graph
 {
   std::vector<Part_node> nodes; ///< instances
