@@ -5,9 +5,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
-
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Weights/utils.h>
+#include <CGAL/MPM/internal/Cotangent_weights.h>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -20,14 +18,6 @@ namespace CGAL {
 namespace MPM {
 
 using namespace internal::embedding;
-
-namespace {
-
-using Kernel = CGAL::Simple_cartesian<double>;
-
-Kernel::Point_3 point(const Point_matrix& p, int i) { return Kernel::Point_3(p(i, 0), p(i, 1), p(i, 2)); }
-
-} // namespace
 
 Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_options& o)
   : options(o), mesh(problem.mesh), n(problem.mesh.number_of_vertices())
@@ -135,32 +125,10 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   d.vertices = c.vertices;
   d.mean = c.mean;
 
-  // Cotangent weights measured on the mean: half the cotangent of the
-  // opposite angle per adjacent triangle. Negative ones are clamped (to a
-  // small fraction of the mean weight) so that the matrix stays positive
-  // definite and no edge is left without stiffness. Large ones are bounded
-  // as CGAL's clamped cotangent bounds them (cosine within +-0.999, as in
-  // its ARAP deformation): a sliver of a scanned mesh (cotangent 4e14 on a
-  // PSB octopus) otherwise drowned the whole system in rounding, and the
-  // energy rose from the rest pose.
-  const double largest_cotangent = 0.999 / std::sqrt(1. - 0.999 * 0.999);
-  std::map<std::pair<int, int>, double> cotangent;
-  for(const Triangle& t : c.triangles)
-    for(int k = 0; k < 3; ++k)
-    {
-      const int a = t[k], b = t[(k + 1) % 3], o = t[(k + 2) % 3];
-      const double cot = CGAL::Weights::cotangent(point(c.mean, a), point(c.mean, o), point(c.mean, b));
-      cotangent[{std::min(a, b), std::max(a, b)}] += std::isfinite(cot) ? 0.5 * std::min(cot, largest_cotangent) : 0.;
-    }
-  double positive_sum = 0.;
-  int positive_count = 0;
-  for(const auto& [e, w] : cotangent)
-    if(w > 0)
-    {
-      positive_sum += w;
-      ++positive_count;
-    }
-  const double floor_weight = 1e-2 * (positive_count > 0 ? positive_sum / positive_count : 1.);
+  // Cotangent weights measured on the mean, under the package's one clamping
+  // rule (internal/Cotangent_weights.h): a sliver of a scanned mesh would
+  // otherwise drown the system in rounding.
+  const std::map<std::pair<int, int>, double> cotangent = internal::cotangent_weights(c.mean, c.triangles);
 
   std::vector<double> blend(nc, 1.);
   if(!c.border.empty())
@@ -178,7 +146,7 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   {
     double w = 1.; // uniform on virtual and non-manifold edges
     const auto it = cotangent.find({std::min(e.source, e.target), std::max(e.source, e.target)});
-    if(!e.is_virtual && it != cotangent.end()) w = std::max(it->second, floor_weight);
+    if(!e.is_virtual && it != cotangent.end()) w = it->second;
     // The blend fades a cluster toward its border, but never to exactly zero.
     w *= std::max(0.5 * (blend[e.source] + blend[e.target]), 1e-3) * inverse_variance;
     d.edges.push_back({e.source, e.target, w});
