@@ -101,7 +101,7 @@ double Embedding_solver::iterate()
         lap(t.schur_ms);
         const Eigen::MatrixXd rhs = d.positions_rhs(lambda);
         lap(t.right_hand_side_ms);
-        v = d.solve_a11(rhs);
+        v = d.block->solve(rhs);
         lap(t.back_substitution_ms);
       }
       else

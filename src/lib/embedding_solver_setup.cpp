@@ -241,14 +241,10 @@ Eigen::VectorXd Embedding_solver::Impl::diagonal_terms(const std::vector<int>& h
 
 void Embedding_solver::Impl::factor()
 {
-  factored_diagonal = diagonal_terms(handle_vertices);
-  system = elastic;
-  for(int v = 0; v < n; ++v) system.coeffRef(v, v) += factored_diagonal[v];
-  system.makeCompressed();
-  solver = make_vertex_block_solver(options.sparse_solver);
-  if(!solver->factor(system))
+  std::unique_ptr<Vertex_block> replacement = make_vertex_block(options.sparse_solver);
+  if(!replacement->factor(elastic, diagonal_terms(handle_vertices)))
   {
-    const int row = solver->weakest_row();
+    const int row = replacement->weakest_row();
     std::string where = "a cluster may be degenerate";
     for(const Cluster_data& c : clusters)
       if(row >= 0 && std::find(c.vertices.begin(), c.vertices.end(), row) != c.vertices.end())
@@ -258,12 +254,10 @@ void Embedding_solver::Impl::factor()
       }
     throw Computation_error("embedding: the vertex block is not positive definite (" + where + ")");
   }
+  block = std::move(replacement);
   factored = true;
   handle_terms_ready = false;
   handle_columns_valid = false;
-  update_vertices.clear();
-  update_weights.resize(0);
-  update_columns.resize(n, 0);
 
   if(options.global_step == Global_step::direct) return;
   const int dm = total_modes, nc = static_cast<int>(clusters.size());
@@ -305,7 +299,7 @@ void Embedding_solver::Impl::factor()
       else
         rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean);
     }
-    const Eigen::MatrixXd solved = solver->solve(rhs); // of A_f: the update is applied below
+    const Eigen::MatrixXd solved = block->solve_factored(rhs); // the update is applied below
     for(const Cluster_data& c : clusters)
     {
       const int ci = static_cast<int>(&c - clusters.data());
@@ -318,9 +312,9 @@ void Embedding_solver::Impl::factor()
         else plm_blocks[std::size_t(column - dm) * nc + ci] = with_mean;
         for(int k = 0; k < c.number_of_modes(); ++k)
         {
-          const Eigen::Matrix3d block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
-          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = block;
-          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = block;
+          const Eigen::Matrix3d mode_block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
+          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = mode_block;
+          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = mode_block;
         }
       }
     }
@@ -331,18 +325,6 @@ void Embedding_solver::Impl::factor()
   qlm_base = qlm_blocks;
 }
 
-Eigen::MatrixXd Embedding_solver::Impl::solve_a11(const Eigen::MatrixXd& rhs) const
-{
-  Eigen::MatrixXd x = solver->solve(rhs);
-  if(!update_vertices.empty())
-  {
-    Eigen::MatrixXd at_updates(update_vertices.size(), x.cols());
-    for(std::size_t u = 0; u < update_vertices.size(); ++u) at_updates.row(u) = x.row(update_vertices[u]);
-    x -= update_columns * (capacitance_inverse * at_updates);
-  }
-  return x;
-}
-
 // Accepts `vertices` as a low-rank change of the factored block when few
 // diagonal entries differ from it (handles added, removed or moved, and the
 // anchors of pieces that gained or lost their handles); false asks for a
@@ -351,42 +333,23 @@ Eigen::MatrixXd Embedding_solver::Impl::solve_a11(const Eigen::MatrixXd& rhs) co
 bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
 {
   constexpr Eigen::Index max_update = 64;
-  if(!factored) return false;
-  const Eigen::VectorXd change = diagonal_terms(vertices) - factored_diagonal;
-  if((change.array() != 0.).count() > max_update) return false;
-  update_vertices.clear();
-  std::vector<double> weights;
-  for(int v = 0; v < n; ++v)
-    if(change[v] != 0.)
-    {
-      update_vertices.push_back(v);
-      weights.push_back(change[v]);
-    }
-  update_weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), Eigen::Index(weights.size()));
+  if(!factored || !block->update(diagonal_terms(vertices), max_update)) return false;
   apply_update();
   return true;
 }
 
+// The Schur blocks of the updated vertex block.
 void Embedding_solver::Impl::apply_update()
 {
   handle_columns_valid = false;
-  const int k = static_cast<int>(update_vertices.size());
-  if(k == 0)
+  if(block->update_vertices().empty())
   {
-    update_columns.resize(n, 0);
     h_blocks = h_base;
     g_blocks = g_base;
     plm_blocks = plm_base;
     qlm_blocks = qlm_base;
     return;
   }
-  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, k);
-  for(int u = 0; u < k; ++u) unit(update_vertices[u], u) = 1.;
-  update_columns = solver->solve(unit);
-  Eigen::MatrixXd capacitance(k, k);
-  for(int u = 0; u < k; ++u) capacitance.row(u) = update_columns.row(update_vertices[u]);
-  capacitance.diagonal() += update_weights.cwiseInverse();
-  capacitance_inverse = capacitance.inverse();
   if(options.global_step == Global_step::direct) return;
 
   // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
@@ -396,12 +359,12 @@ void Embedding_solver::Impl::apply_update()
   for(int c = 0; c < nc; ++c)
   {
     const Cluster_data& d = clusters[c];
-    const Eigen::MatrixXd local = gather(d, update_columns);
+    const Eigen::MatrixXd local = gather(d, block->update_columns());
     t_mean[c] = local.transpose() * d.laplacian_mean;
     for(int m = 0; m < d.number_of_modes(); ++m) t_mode[d.offset + m] = local.transpose() * d.laplacian_modes[m];
   }
   const auto correction = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) -> Eigen::Matrix3d {
-    return x.transpose() * (capacitance_inverse * y);
+    return x.transpose() * (block->capacitance_inverse() * y);
   };
   for(int a = 0; a < dm; ++a)
   {
@@ -416,15 +379,6 @@ void Embedding_solver::Impl::apply_update()
   for(int d = 0; d < nc; ++d)
     for(int c = 0; c < nc; ++c)
       plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
-}
-
-// A11 x for the updated block: the factored matrix plus the low-rank update.
-Eigen::MatrixXd Embedding_solver::Impl::updated_product(const Eigen::MatrixXd& x) const
-{
-  Eigen::MatrixXd product = system * x;
-  for(std::size_t u = 0; u < update_vertices.size(); ++u)
-    product.row(update_vertices[u]) += update_weights[Eigen::Index(u)] * x.row(update_vertices[u]);
-  return product;
 }
 
 // The anchors' part of b0: each anchored vertex pulled to its rest position.
@@ -443,19 +397,19 @@ Point_matrix Embedding_solver::Impl::anchor_right_hand_side() const
 Eigen::MatrixXd Embedding_solver::Impl::handle_solution()
 {
   constexpr std::size_t max_kept_columns = 48;
-  if(handle_vertices.size() > max_kept_columns) return solve_a11(b0);
+  if(handle_vertices.size() > max_kept_columns) return block->solve(b0);
   if(!handle_columns_valid || handle_columns_for != handle_vertices)
   {
     const Eigen::Index k = Eigen::Index(handle_vertices.size());
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, k + 3);
     for(Eigen::Index h = 0; h < k; ++h) rhs(handle_vertices[std::size_t(h)], h) = 1.;
     rhs.rightCols<3>() = anchor_right_hand_side();
-    Eigen::MatrixXd solved = solve_a11(rhs);
+    Eigen::MatrixXd solved = block->solve(rhs);
     // Through a low-rank update the solutions carry a larger rounding, which
     // the reduced energy (the handle constant minus b0^T z, two sums of the
     // handles' stiffness times their squared targets) would magnify: one
     // step of iterative refinement against the updated block.
-    if(!update_vertices.empty()) solved += solve_a11(rhs - updated_product(solved));
+    if(!block->update_vertices().empty()) solved += block->solve(rhs - block->product(solved));
     handle_columns = solved.leftCols(k);
     anchor_solution = solved.rightCols<3>();
     handle_columns_for = handle_vertices;

@@ -103,7 +103,7 @@ Eigen::MatrixXd Embedding_solver::Impl::positions_rhs(const Eigen::VectorXd& lam
 
 Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambda) const
 {
-  return solve_a11(positions_rhs(lambda));
+  return block->solve(positions_rhs(lambda));
 }
 
 // W[c][d] = X_c^T A11^-1 X_d at [c * nc + d], and X_c^T Z at [nc * nc + c].
@@ -117,17 +117,17 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
     for(int d = 0; d < nc; ++d)
     {
       const Cluster_data& cd = clusters[d];
-      Eigen::Matrix3d block = plm_blocks[std::size_t(d) * nc + c].transpose();
+      Eigen::Matrix3d entry = plm_blocks[std::size_t(d) * nc + c].transpose();
       for(int l = 0; l < cd.number_of_modes(); ++l)
-        block += lambda[cd.offset + l] * qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
+        entry += lambda[cd.offset + l] * qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
       for(int k = 0; k < cc.number_of_modes(); ++k)
       {
         const double lk = lambda[cc.offset + k];
-        block += lk * g_blocks[std::size_t(cc.offset + k) * nc + d];
+        entry += lk * g_blocks[std::size_t(cc.offset + k) * nc + d];
         for(int l = 0; l < cd.number_of_modes(); ++l)
-          block += lk * lambda[cd.offset + l] * h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
+          entry += lk * lambda[cd.offset + l] * h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
       }
-      w[std::size_t(c) * nc + d] = block;
+      w[std::size_t(c) * nc + d] = entry;
     }
     Eigen::Matrix3d z = zlm_blocks[c].transpose();
     for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * z_blocks[cc.offset + k];
@@ -358,11 +358,14 @@ void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd
 {
   const int dm = total_modes, size = 3 * n + dm;
   std::vector<Eigen::Triplet<double>> t;
+  const Sparse& system = block->factored_matrix();
   for(int a = 0; a < 3; ++a)
     for(int k = 0; k < system.outerSize(); ++k)
       for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * n + it.row(), a * n + it.col(), it.value());
+  const std::vector<int>& update_vertices = block->update_vertices();
   for(std::size_t u = 0; u < update_vertices.size(); ++u)
-    for(int a = 0; a < 3; ++a) t.emplace_back(a * n + update_vertices[u], a * n + update_vertices[u], update_weights[u]);
+    for(int a = 0; a < 3; ++a)
+      t.emplace_back(a * n + update_vertices[u], a * n + update_vertices[u], block->update_weights()[Eigen::Index(u)]);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
   for(int a = 0; a < 3; ++a) rhs.segment(a * n, n) = b0.col(a);
   Eigen::MatrixXd lambda_block = coupling;

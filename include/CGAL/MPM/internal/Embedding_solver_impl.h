@@ -5,13 +5,14 @@
 
 // The state of `Embedding_solver` shared by its sources: set-up and
 // factorization (embedding_solver_setup.cpp), the local and global steps
-// and energies (embedding_solver_steps.cpp), the iterations and the public
-// API (embedding_solver.cpp), and the factored vertex block
-// (vertex_block_solver.cpp).
+// and energies (embedding_solver_steps.cpp), and the iterations and the
+// public API (embedding_solver.cpp); the factored vertex block is its own
+// class (Vertex_block.h).
 
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Rotation_lbfgs.h>
+#include <CGAL/MPM/internal/Vertex_block.h>
 
 #include <Eigen/Core>
 #include <Eigen/SVD>
@@ -26,38 +27,6 @@ namespace CGAL {
 namespace MPM {
 namespace internal {
 namespace embedding {
-
-using Sparse = Eigen::SparseMatrix<double>;
-
-// The constant vertex block is factored through CGAL's solver traits, so any
-// Eigen-compatible direct solver plugs in the same way.
-class Vertex_block_solver
-{
-public:
-  virtual ~Vertex_block_solver() = default;
-  virtual bool factor(const Sparse& a) = 0;
-  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) = 0;
-  // After a failed factor(): the row with the smallest pivot, or -1 when the
-  // solver does not tell.
-  virtual int weakest_row() const { return -1; }
-};
-
-// LDLT factors an indefinite matrix without complaint (LLT refuses it): the
-// pivots say whether the matrix was positive definite, and where not.
-template <class Ldlt>
-int non_positive_pivot_row(const Ldlt& ldlt)
-{
-  const Eigen::VectorXd& pivots = ldlt.vectorD();
-  Eigen::Index weakest = 0;
-  if(pivots.size() == 0) return -1;
-  for(Eigen::Index i = 0; i < pivots.size(); ++i)
-    if(!(pivots[i] >= pivots[weakest])) weakest = i;
-  if(pivots[weakest] > 0) return -1;
-  return ldlt.permutationPinv().indices()[weakest];
-}
-
-// The factored vertex block of `which` kind (see vertex_block_solver.cpp).
-std::unique_ptr<Vertex_block_solver> make_vertex_block_solver(Sparse_solver which);
 
 // Closest rotation (no reflection) to a 3x3 matrix, maximizing <R, k>.
 inline Eigen::Matrix3d closest_rotation(const Eigen::Matrix3d& k)
@@ -100,7 +69,6 @@ struct Embedding_solver::Impl
   using Sparse = internal::embedding::Sparse;
   using Cluster_data = internal::embedding::Cluster_data;
   using Weighted_edge = internal::embedding::Weighted_edge;
-  using Vertex_block_solver = internal::embedding::Vertex_block_solver;
 
   Embedding_options options;
   Indexed_mesh mesh;
@@ -114,22 +82,14 @@ struct Embedding_solver::Impl
   // Handles.
   std::vector<int> handle_vertices;
   Point_matrix handle_targets;
+  // The factored vertex block. Not `factored` for the handles after a change
+  // of handle set it cannot take as a low-rank update; it still gives the
+  // implicit positions of the current state until refactored.
+  std::unique_ptr<internal::embedding::Vertex_block> block;
   bool factored = false;
-  // A change of handle vertices (and of the anchors it moves: a piece that
-  // gains or loses its handles) changes a few diagonal entries of the
-  // vertex block, a low-rank (Woodbury) update of the factored block:
-  // A = A_f + U diag(w) U^T with U the changed vertices,
-  // A^-1 = A_f^-1 - C K^-1 C^T, C = A_f^-1 U, K = diag(1/w) + U^T C.
-  Eigen::VectorXd factored_diagonal; // anchors and handle weights in A_f
-  std::vector<int> update_vertices;
-  Eigen::VectorXd update_weights;
-  Eigen::MatrixXd update_columns;      // C, n x k
-  Eigen::MatrixXd capacitance_inverse; // K^-1
   std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base; // blocks of A_f
   bool handle_terms_ready = false;
   Eigen::VectorXd anchor;         // per-vertex anchor weight
-  Sparse system;                  // A11
-  std::unique_ptr<Vertex_block_solver> solver;
 
   // Schur blocks, 3x3 each: H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d,
   // Gz[ck] = (L_c B_ck)^T Z, with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
@@ -178,8 +138,6 @@ struct Embedding_solver::Impl
   void factor();
   bool update_handle_set(const std::vector<int>& vertices);
   void apply_update();
-  Eigen::MatrixXd solve_a11(const Eigen::MatrixXd& rhs) const;
-  Eigen::MatrixXd updated_product(const Eigen::MatrixXd& x) const;
   Point_matrix anchor_right_hand_side() const;
   Eigen::MatrixXd handle_solution();
   void prepare_handle_terms();
