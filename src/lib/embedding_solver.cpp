@@ -244,7 +244,17 @@ Eigen::VectorXd Embedding_solver::coordinates(int c) const
   return impl_->coordinates.segment(d.offset, d.number_of_modes());
 }
 
-const Eigen::Matrix3d& Embedding_solver::rotation(int c) const { return impl_->rotations.at(c); }
+const Eigen::Matrix3d& Embedding_solver::rotation(int c) const
+{
+  // With a rotation per vertex, a cluster has none of its own to report.
+  static const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  if(impl_->options.rotations == Rotations::per_vertex)
+  {
+    static_cast<void>(impl_->clusters.at(c)); // throws on a bad index, as for one rotation per cluster
+    return identity;
+  }
+  return impl_->rotations.at(c);
+}
 
 double Embedding_solver::energy() const
 {

@@ -93,9 +93,8 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
   if(options.rotations == Rotations::per_vertex) options.global_step = Global_step::direct;
   positions = mesh.points;
   coordinates = Eigen::VectorXd::Zero(total_modes);
-  rotations.assign(clusters.size(), Eigen::Matrix3d::Identity());
-  if(options.rotations == Rotations::per_vertex)
-    for(const Cluster_data& c : clusters) vertex_rotations.emplace_back(c.vertices.size(), Eigen::Matrix3d::Identity());
+  rotation_groups = Rotation_groups(clusters, options.rotations);
+  rotations.assign(std::size_t(rotation_groups.size()), Eigen::Matrix3d::Identity());
   compute_anchor();
   local_step();
 }
@@ -169,20 +168,6 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   d.offset = total_modes;
   total_modes += c.modes.cols();
   clusters.push_back(std::move(d));
-}
-
-Eigen::MatrixXd Embedding_solver::Impl::scatter(const Cluster_data& c, const Point_matrix& local) const
-{
-  Eigen::MatrixXd global = Eigen::MatrixXd::Zero(n, 3);
-  for(std::size_t i = 0; i < c.vertices.size(); ++i) global.row(c.vertices[i]) += local.row(i);
-  return global;
-}
-
-Eigen::MatrixXd Embedding_solver::Impl::gather(const Cluster_data& c, const Eigen::MatrixXd& global) const
-{
-  Eigen::MatrixXd local(c.vertices.size(), global.cols());
-  for(std::size_t i = 0; i < c.vertices.size(); ++i) local.row(i) = global.row(c.vertices[i]);
-  return local;
 }
 
 Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const
@@ -294,10 +279,10 @@ void Embedding_solver::Impl::factor()
       if(column < dm)
       {
         const Cluster_data& d = clusters[cluster_of_mode[column]];
-        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset]);
+        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset], n);
       }
       else
-        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean);
+        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean, n);
     }
     const Eigen::MatrixXd solved = block->solve_factored(rhs); // the update is applied below
     for(const Cluster_data& c : clusters)

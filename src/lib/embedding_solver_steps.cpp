@@ -17,41 +17,7 @@ namespace MPM {
 
 using namespace internal::embedding;
 
-void Embedding_solver::Impl::local_step()
-{
-  for(std::size_t c = 0; c < clusters.size(); ++c)
-  {
-    const Cluster_data& d = clusters[c];
-    if(options.rotations == Rotations::per_vertex)
-    {
-      // Each point's rotation fits its incident edges (its one-ring in the cluster).
-      const Point_matrix m = target_shape(d, coordinates);
-      std::vector<Eigen::Matrix3d> covariance(d.vertices.size(), Eigen::Matrix3d::Zero());
-      for(const Weighted_edge& e : d.edges)
-      {
-        const Eigen::Vector3d edge = (positions.row(d.vertices[e.i]) - positions.row(d.vertices[e.j])).transpose();
-        const Eigen::Vector3d rest = (m.row(e.i) - m.row(e.j)).transpose();
-        const Eigen::Matrix3d k = e.w * edge * rest.transpose();
-        covariance[e.i] += k;
-        covariance[e.j] += k;
-      }
-      for(std::size_t i = 0; i < d.vertices.size(); ++i) vertex_rotations[c][i] = closest_rotation(covariance[i]);
-      continue;
-    }
-    Point_matrix lm = d.laplacian_mean;
-    for(int k = 0; k < d.number_of_modes(); ++k) lm += coordinates[d.offset + k] * d.laplacian_modes[k];
-    const Eigen::Matrix3d covariance = gather(d, positions).transpose() * lm;
-    rotations[c] = closest_rotation(covariance);
-  }
-}
-
-// The linear map an edge's target vector goes through: the cluster's rotation,
-// or the average of its ends' rotations.
-Eigen::Matrix3d Embedding_solver::Impl::edge_transform(int c, const Weighted_edge& e) const
-{
-  if(options.rotations == Rotations::per_vertex) return 0.5 * (vertex_rotations[c][e.i] + vertex_rotations[c][e.j]);
-  return rotations[c];
-}
+void Embedding_solver::Impl::local_step() { rotation_groups.fit(clusters, positions, coordinates, rotations); }
 
 // The shape-coordinate system S(R) lambda = r(R) at the current rotations:
 // half the Hessian of the energy in the coordinates, and the right-hand side.
@@ -376,7 +342,7 @@ void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd
     std::vector<Eigen::Vector3d> mode_edges(modes);
     for(const Weighted_edge& e : d.edges)
     {
-      const Eigen::Matrix3d transform = edge_transform(static_cast<int>(c), e);
+      const Eigen::Matrix3d transform = rotation_groups.edge_transform(static_cast<int>(c), e, rotations);
       const int gi = d.vertices[e.i], gj = d.vertices[e.j];
       const Eigen::Vector3d u = transform * (d.mean.row(e.i) - d.mean.row(e.j)).transpose();
       for(int a = 0; a < 3; ++a)
@@ -428,7 +394,7 @@ double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::Vec
     const Point_matrix m = target_shape(d, lambda);
     for(const Weighted_edge& edge : d.edges)
       e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])).transpose() -
-                     edge_transform(static_cast<int>(c), edge) * (m.row(edge.i) - m.row(edge.j)).transpose())
+                     rotation_groups.edge_transform(static_cast<int>(c), edge, rotations) * (m.row(edge.i) - m.row(edge.j)).transpose())
                       .squaredNorm();
     for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
   }

@@ -6,16 +6,17 @@
 // The state of `Embedding_solver` shared by its sources: set-up and
 // factorization (embedding_solver_setup.cpp), the local and global steps
 // and energies (embedding_solver_steps.cpp), and the iterations and the
-// public API (embedding_solver.cpp); the factored vertex block is its own
-// class (Vertex_block.h).
+// public API (embedding_solver.cpp). Parts with one job each have their own
+// headers: the factored vertex block (Vertex_block.h) and the rotation fit
+// (Rotation_groups.h).
 
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Rotation_groups.h>
 #include <CGAL/MPM/internal/Rotation_lbfgs.h>
 #include <CGAL/MPM/internal/Vertex_block.h>
 
 #include <Eigen/Core>
-#include <Eigen/SVD>
 #include <Eigen/SparseCore>
 
 #include <limits>
@@ -25,44 +26,6 @@
 
 namespace CGAL {
 namespace MPM {
-namespace internal {
-namespace embedding {
-
-// Closest rotation (no reflection) to a 3x3 matrix, maximizing <R, k>.
-inline Eigen::Matrix3d closest_rotation(const Eigen::Matrix3d& k)
-{
-  Eigen::JacobiSVD<Eigen::Matrix3d> svd(k, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
-  if((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0) d(2, 2) = -1;
-  return svd.matrixU() * d * svd.matrixV().transpose();
-}
-
-struct Weighted_edge
-{
-  int i, j;
-  double w;
-};
-
-struct Cluster_data
-{
-  std::string name;
-  std::vector<int> vertices;
-  std::vector<Weighted_edge> edges;   // weights include sigma_sub^-2 and the blend
-  Sparse laplacian;                   // local, n_c x n_c
-  Point_matrix mean;
-  std::vector<Point_matrix> modes;    // n_c x 3 each
-  Eigen::VectorXd prior;              // 1 / (4 sigma_k^2)
-  Point_matrix laplacian_mean;        // L M
-  std::vector<Point_matrix> laplacian_modes; // L B_k
-  int offset = 0;                     // of its coordinates in the stacked vector
-  int number_of_modes() const { return static_cast<int>(modes.size()); }
-};
-
-// <a, b^T>: the trace of a b.
-inline double trace_product(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a.array() * b.transpose().array()).sum(); }
-
-} // namespace embedding
-} // namespace internal
 
 struct Embedding_solver::Impl
 {
@@ -74,6 +37,7 @@ struct Embedding_solver::Impl
   Indexed_mesh mesh;
   int n = 0;
   std::vector<Cluster_data> clusters;
+  internal::embedding::Rotation_groups rotation_groups;
   int total_modes = 0;
   Sparse elastic;                 // sum of cluster Laplacians, n x n
   double mean_diagonal = 1.;
@@ -125,8 +89,7 @@ struct Embedding_solver::Impl
   std::vector<Eigen::Matrix3d> w_blocks;
   Point_matrix positions;
   Eigen::VectorXd coordinates;
-  std::vector<Eigen::Matrix3d> rotations;
-  std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations; // per cluster point, with Rotations::per_vertex
+  std::vector<Eigen::Matrix3d> rotations; // per rotation group: cluster c's at c with one per cluster
   int iterations_since_reset = 0;
   Iteration_timings timings; // of the last iterate()
 
@@ -141,11 +104,8 @@ struct Embedding_solver::Impl
   Point_matrix anchor_right_hand_side() const;
   Eigen::MatrixXd handle_solution();
   void prepare_handle_terms();
-  Eigen::MatrixXd scatter(const Cluster_data& c, const Point_matrix& local) const;
-  Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
   Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
   void local_step();
-  Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
   Eigen::Matrix3d fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const;
   void start_at_rigid_fit_of_handles();
   Eigen::VectorXd packed_state() const;
@@ -179,13 +139,12 @@ struct Embedding_solver::Impl
     Point_matrix positions;
     Eigen::VectorXd coordinates;
     std::vector<Eigen::Matrix3d> rotations, w_blocks;
-    std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations;
     bool implicit = false, positions_valid = true;
     int iterations_since_reset = 0;
   };
   State save() const
   {
-    return {positions, coordinates, rotations, w_blocks, vertex_rotations, implicit, positions_valid, iterations_since_reset};
+    return {positions, coordinates, rotations, w_blocks, implicit, positions_valid, iterations_since_reset};
   }
   void restore(State s)
   {
@@ -193,7 +152,6 @@ struct Embedding_solver::Impl
     coordinates = std::move(s.coordinates);
     rotations = std::move(s.rotations);
     w_blocks = std::move(s.w_blocks);
-    vertex_rotations = std::move(s.vertex_rotations);
     implicit = s.implicit;
     positions_valid = s.positions_valid;
     iterations_since_reset = s.iterations_since_reset;
