@@ -91,6 +91,7 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
 
   // Per-vertex rotations have no rotation-commuting structure to exploit.
   if(options.rotations == Rotations::per_vertex) options.global_step = Global_step::direct;
+  global_step = make_global_step(options.global_step);
   positions = mesh.points;
   coordinates = Eigen::VectorXd::Zero(total_modes);
   rotation_groups = Rotation_groups(clusters, options.rotations);
@@ -244,7 +245,7 @@ void Embedding_solver::Impl::factor()
   handle_terms_ready = false;
   handle_columns_valid = false;
 
-  if(options.global_step == Global_step::direct) return;
+  if(!global_step->uses_blocks()) return;
   const int dm = total_modes, nc = static_cast<int>(clusters.size());
   mode_gram = Eigen::MatrixXd::Zero(dm, dm);
   mean_energy.resize(nc);
@@ -335,7 +336,7 @@ void Embedding_solver::Impl::apply_update()
     qlm_blocks = qlm_base;
     return;
   }
-  if(options.global_step == Global_step::direct) return;
+  if(!global_step->uses_blocks()) return;
 
   // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
   // X^T A^-1 Y = X^T A_f^-1 Y - T_X^T K^-1 T_Y.
@@ -414,7 +415,7 @@ void Embedding_solver::Impl::prepare_handle_terms()
   for(int v = 0; v < n; ++v) handle_constant += anchor[v] * mesh.points.row(v).squaredNorm();
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
-  if(options.global_step != Global_step::direct)
+  if(global_step->uses_blocks())
   {
     const Eigen::MatrixXd z = handle_solution();
     b0_z = (b0.array() * z.array()).sum();

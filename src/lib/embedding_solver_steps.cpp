@@ -5,10 +5,8 @@
 #include <CGAL/MPM/Input_error.h>
 
 #include <Eigen/Cholesky>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -159,19 +157,15 @@ Eigen::VectorXd Embedding_solver::Impl::rotation_gradient() const
 // receives the time of each phase.
 double Embedding_solver::Impl::settle_at_rotations(Iteration_timings* timings)
 {
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point mark = Clock::now();
-  const auto lap = [&](double Iteration_timings::*phase) {
-    const Clock::time_point now = Clock::now();
-    if(timings) timings->*phase += std::chrono::duration<double, std::milli>(now - mark).count();
-    mark = now;
-  };
+  Iteration_timings unused;
+  Iteration_timings& t = timings ? *timings : unused;
+  internal::Lap_timer clock;
   Eigen::VectorXd lambda = solve_coordinates();
-  lap(&Iteration_timings::schur_ms);
+  t.schur_ms += clock.lap();
   std::vector<Eigen::Matrix3d> w = w_of(lambda);
-  lap(&Iteration_timings::right_hand_side_ms);
+  t.right_hand_side_ms += clock.lap();
   const double e = reduced_energy(lambda, w);
-  lap(&Iteration_timings::energy_ms);
+  t.energy_ms += clock.lap();
   if(!lambda.allFinite()) check_finite(positions, lambda);
   if(!std::isfinite(e)) fail_on_non_finite_energy(positions_from(lambda), lambda);
   coordinates = std::move(lambda);
@@ -201,7 +195,7 @@ void Embedding_solver::Impl::start_at_rigid_fit_of_handles()
 // count), positions and coordinates otherwise.
 Eigen::VectorXd Embedding_solver::Impl::packed_state() const
 {
-  const bool reduced = options.global_step == Global_step::reduced;
+  const bool reduced = global_step->implicit_positions();
   const int nc = static_cast<int>(clusters.size());
   Eigen::VectorXd x(reduced ? 9 * nc + total_modes : 3 * n + total_modes);
   if(reduced)
@@ -216,7 +210,7 @@ Eigen::VectorXd Embedding_solver::Impl::packed_state() const
 double Embedding_solver::Impl::enter_state(const Eigen::VectorXd& x)
 {
   coordinates = x.tail(total_modes);
-  if(options.global_step == Global_step::reduced)
+  if(global_step->implicit_positions())
   {
     for(int c = 0; c < static_cast<int>(clusters.size()); ++c)
       rotations[c] = closest_rotation(Eigen::Map<const Eigen::Matrix3d>(x.segment<9>(9 * c).data()));
@@ -234,7 +228,7 @@ bool Embedding_solver::Impl::take_if_lower(const Eigen::VectorXd& candidate, con
                                            double& energy)
 {
   const std::vector<Eigen::Matrix3d> plain_rotations = rotations, plain_w = w_blocks;
-  const Point_matrix plain_positions = options.global_step == Global_step::reduced ? Point_matrix() : positions;
+  const Point_matrix plain_positions = global_step->implicit_positions() ? Point_matrix() : positions;
   const double e = candidate.allFinite() ? enter_state(candidate) : std::numeric_limits<double>::infinity();
   if(e < energy)
   {
@@ -244,7 +238,7 @@ bool Embedding_solver::Impl::take_if_lower(const Eigen::VectorXd& candidate, con
   coordinates = plain.tail(total_modes);
   rotations = plain_rotations;
   w_blocks = plain_w;
-  if(options.global_step != Global_step::reduced) positions = plain_positions;
+  if(!global_step->implicit_positions()) positions = plain_positions;
   return false;
 }
 
@@ -314,74 +308,6 @@ const Point_matrix& Embedding_solver::Impl::materialized_positions()
     positions_valid = true;
   }
   return positions;
-}
-
-// The reference: the whole quadratic in (x, y, z, lambda), assembled edge by
-// edge (not from the cluster Laplacians the fast paths use) and factored
-// afresh. Slow, simple, and what the fast paths must agree with. With edge
-// transforms T_e, targets t_e = T_e (m_e + sum_k lambda_k b_ke).
-void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda)
-{
-  const int dm = total_modes, size = 3 * n + dm;
-  std::vector<Eigen::Triplet<double>> t;
-  const Sparse& system = block->factored_matrix();
-  for(int a = 0; a < 3; ++a)
-    for(int k = 0; k < system.outerSize(); ++k)
-      for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * n + it.row(), a * n + it.col(), it.value());
-  const std::vector<int>& update_vertices = block->update_vertices();
-  for(std::size_t u = 0; u < update_vertices.size(); ++u)
-    for(int a = 0; a < 3; ++a)
-      t.emplace_back(a * n + update_vertices[u], a * n + update_vertices[u], block->update_weights()[Eigen::Index(u)]);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
-  for(int a = 0; a < 3; ++a) rhs.segment(a * n, n) = b0.col(a);
-  Eigen::MatrixXd lambda_block = coupling;
-  for(std::size_t c = 0; c < clusters.size(); ++c)
-  {
-    const Cluster_data& d = clusters[c];
-    const int modes = d.number_of_modes();
-    std::vector<Eigen::Vector3d> mode_edges(modes);
-    for(const Weighted_edge& e : d.edges)
-    {
-      const Eigen::Matrix3d transform = rotation_groups.edge_transform(static_cast<int>(c), e, rotations);
-      const int gi = d.vertices[e.i], gj = d.vertices[e.j];
-      const Eigen::Vector3d u = transform * (d.mean.row(e.i) - d.mean.row(e.j)).transpose();
-      for(int a = 0; a < 3; ++a)
-      {
-        rhs[a * n + gi] += e.w * u[a];
-        rhs[a * n + gj] -= e.w * u[a];
-      }
-      for(int k = 0; k < modes; ++k)
-      {
-        mode_edges[k] = transform * (d.modes[k].row(e.i) - d.modes[k].row(e.j)).transpose();
-        const int row = 3 * n + d.offset + k;
-        for(int a = 0; a < 3; ++a)
-        {
-          const double value = e.w * mode_edges[k][a];
-          t.emplace_back(row, a * n + gi, -value);
-          t.emplace_back(a * n + gi, row, -value);
-          t.emplace_back(row, a * n + gj, value);
-          t.emplace_back(a * n + gj, row, value);
-        }
-        rhs[row] -= e.w * mode_edges[k].dot(u);
-      }
-      for(int k = 0; k < modes; ++k)
-        for(int l = 0; l < modes; ++l)
-          lambda_block(d.offset + k, d.offset + l) += e.w * mode_edges[k].dot(mode_edges[l]);
-    }
-    for(int k = 0; k < modes; ++k) lambda_block(d.offset + k, d.offset + k) += d.prior[k];
-  }
-  for(int a = 0; a < dm; ++a)
-    for(int b = 0; b < dm; ++b)
-      if(lambda_block(a, b) != 0.) t.emplace_back(3 * n + a, 3 * n + b, lambda_block(a, b));
-  Sparse k(size, size);
-  k.setFromTriplets(t.begin(), t.end());
-  Eigen::SimplicialLDLT<Sparse> ldlt(k);
-  if(ldlt.info() != Eigen::Success || non_positive_pivot_row(ldlt) >= 0)
-    throw Computation_error("embedding: factorization of the full system failed");
-  const Eigen::VectorXd x = ldlt.solve(rhs);
-  v.resize(n, 3);
-  for(int a = 0; a < 3; ++a) v.col(a) = x.segment(a * n, n);
-  lambda = x.tail(dm);
 }
 
 double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only) const

@@ -4,9 +4,10 @@
 #define CGAL_MPM_INTERNAL_EMBEDDING_SOLVER_IMPL_H
 
 // The state of `Embedding_solver` shared by its sources: set-up and
-// factorization (embedding_solver_setup.cpp), the local and global steps
-// and energies (embedding_solver_steps.cpp), and the iterations and the
-// public API (embedding_solver.cpp). Parts with one job each have their own
+// factorization (embedding_solver_setup.cpp), the reduced step's pieces and
+// energies (embedding_solver_steps.cpp), the three global steps
+// (embedding_solver_global_steps.cpp), and the iterations and the public
+// API (embedding_solver.cpp). Parts with one job each have their own
 // headers: the factored vertex block (Vertex_block.h) and the rotation fit
 // (Rotation_groups.h).
 
@@ -19,6 +20,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <chrono>
 #include <limits>
 #include <memory>
 #include <string>
@@ -26,6 +28,26 @@
 
 namespace CGAL {
 namespace MPM {
+namespace internal {
+
+// Splits elapsed time into phases.
+class Lap_timer
+{
+public:
+  // Milliseconds since the previous lap, or since construction.
+  double lap()
+  {
+    const std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - mark_).count();
+    mark_ = now;
+    return ms;
+  }
+
+private:
+  std::chrono::steady_clock::time_point mark_ = std::chrono::steady_clock::now();
+};
+
+} // namespace internal
 
 struct Embedding_solver::Impl
 {
@@ -33,7 +55,26 @@ struct Embedding_solver::Impl
   using Cluster_data = internal::embedding::Cluster_data;
   using Weighted_edge = internal::embedding::Weighted_edge;
 
+  // The global step: for the current rotations, the coordinates and
+  // positions of least energy, by one of the methods of `Global_step`
+  // (embedding_solver_global_steps.cpp).
+  struct Global_step_method
+  {
+    virtual ~Global_step_method() = default;
+    // Moves `d` there and returns the energy; `t` receives each phase's time.
+    virtual double step(Impl& d, Iteration_timings& t) const = 0;
+    // Whether it needs the Schur blocks, built with the factorization.
+    virtual bool uses_blocks() const { return true; }
+    // Whether the positions stay implicit, the rotations and coordinates being the state.
+    virtual bool implicit_positions() const { return false; }
+  };
+  struct Direct_step;
+  struct Schur_step;
+  struct Reduced_step;
+  static std::unique_ptr<Global_step_method> make_global_step(Global_step which);
+
   Embedding_options options;
+  std::unique_ptr<Global_step_method> global_step;
   Indexed_mesh mesh;
   int n = 0;
   std::vector<Cluster_data> clusters;
@@ -127,7 +168,7 @@ struct Embedding_solver::Impl
   std::vector<Eigen::Matrix3d> w_of(const Eigen::VectorXd& lambda) const;
   double reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const;
   const Point_matrix& materialized_positions();
-  void global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda);
+  double take_explicit(Point_matrix v, Eigen::VectorXd lambda, Iteration_timings& t);
   double energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only = -1) const;
   void check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
   [[noreturn]] void fail_on_non_finite_energy(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
