@@ -245,70 +245,7 @@ void Embedding_solver::Impl::factor()
   handle_terms_ready = false;
   handle_columns_valid = false;
 
-  if(!global_step->uses_blocks()) return;
-  const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  mode_gram = Eigen::MatrixXd::Zero(dm, dm);
-  mean_energy.resize(nc);
-  r0 = Eigen::VectorXd::Zero(dm);
-  for(const Cluster_data& c : clusters)
-  {
-    mean_energy[&c - clusters.data()] = (c.mean.array() * c.laplacian_mean.array()).sum();
-    for(int k = 0; k < c.number_of_modes(); ++k)
-    {
-      for(int l = 0; l < c.number_of_modes(); ++l)
-        mode_gram(c.offset + k, c.offset + l) = (c.modes[k].array() * c.laplacian_modes[l].array()).sum();
-      r0[c.offset + k] = -(c.modes[k].array() * c.laplacian_mean.array()).sum();
-    }
-  }
-  s0 = mode_gram + coupling;
-  for(const Cluster_data& c : clusters)
-    for(int k = 0; k < c.number_of_modes(); ++k) s0(c.offset + k, c.offset + k) += c.prior[k];
-  h_blocks.assign(std::size_t(dm) * dm, Eigen::Matrix3d::Zero());
-  g_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
-  qlm_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
-  plm_blocks.assign(std::size_t(nc) * nc, Eigen::Matrix3d::Zero());
-  // Right-hand sides are solved in batches to bound memory on large models.
-  const int columns = dm + nc;
-  const int batch = 16;
-  for(int first = 0; first < columns; first += batch)
-  {
-    const int count = std::min(batch, columns - first);
-    Eigen::MatrixXd rhs(n, 3 * count);
-    for(int j = 0; j < count; ++j)
-    {
-      const int column = first + j;
-      if(column < dm)
-      {
-        const Cluster_data& d = clusters[cluster_of_mode[column]];
-        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset], n);
-      }
-      else
-        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean, n);
-    }
-    const Eigen::MatrixXd solved = block->solve_factored(rhs); // the update is applied below
-    for(const Cluster_data& c : clusters)
-    {
-      const int ci = static_cast<int>(&c - clusters.data());
-      const Eigen::MatrixXd local = gather(c, solved);
-      for(int j = 0; j < count; ++j)
-      {
-        const int column = first + j;
-        const Eigen::Matrix3d with_mean = local.middleCols<3>(3 * j).transpose() * c.laplacian_mean;
-        if(column < dm) qlm_blocks[std::size_t(column) * nc + ci] = with_mean;
-        else plm_blocks[std::size_t(column - dm) * nc + ci] = with_mean;
-        for(int k = 0; k < c.number_of_modes(); ++k)
-        {
-          const Eigen::Matrix3d mode_block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
-          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = mode_block;
-          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = mode_block;
-        }
-      }
-    }
-  }
-  h_base = h_blocks;
-  g_base = g_blocks;
-  plm_base = plm_blocks;
-  qlm_base = qlm_blocks;
+  if(global_step->uses_blocks()) schur.build(clusters, cluster_of_mode, coupling, *block);
 }
 
 // Accepts `vertices` as a low-rank change of the factored block when few
@@ -320,51 +257,9 @@ bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
 {
   constexpr Eigen::Index max_update = 64;
   if(!factored || !block->update(diagonal_terms(vertices), max_update)) return false;
-  apply_update();
-  return true;
-}
-
-// The Schur blocks of the updated vertex block.
-void Embedding_solver::Impl::apply_update()
-{
   handle_columns_valid = false;
-  if(block->update_vertices().empty())
-  {
-    h_blocks = h_base;
-    g_blocks = g_base;
-    plm_blocks = plm_base;
-    qlm_blocks = qlm_base;
-    return;
-  }
-  if(!global_step->uses_blocks()) return;
-
-  // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
-  // X^T A^-1 Y = X^T A_f^-1 Y - T_X^T K^-1 T_Y.
-  const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  std::vector<Eigen::MatrixXd> t_mean(nc), t_mode(dm);
-  for(int c = 0; c < nc; ++c)
-  {
-    const Cluster_data& d = clusters[c];
-    const Eigen::MatrixXd local = gather(d, block->update_columns());
-    t_mean[c] = local.transpose() * d.laplacian_mean;
-    for(int m = 0; m < d.number_of_modes(); ++m) t_mode[d.offset + m] = local.transpose() * d.laplacian_modes[m];
-  }
-  const auto correction = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) -> Eigen::Matrix3d {
-    return x.transpose() * (block->capacitance_inverse() * y);
-  };
-  for(int a = 0; a < dm; ++a)
-  {
-    for(int b = 0; b < dm; ++b)
-      h_blocks[std::size_t(a) * dm + b] = h_base[std::size_t(a) * dm + b] - correction(t_mode[a], t_mode[b]);
-    for(int d = 0; d < nc; ++d)
-    {
-      g_blocks[std::size_t(a) * nc + d] = g_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
-      qlm_blocks[std::size_t(a) * nc + d] = qlm_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
-    }
-  }
-  for(int d = 0; d < nc; ++d)
-    for(int c = 0; c < nc; ++c)
-      plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
+  if(global_step->uses_blocks()) schur.update(clusters, *block);
+  return true;
 }
 
 // The anchors' part of b0: each anchored vertex pulled to its rest position.
@@ -415,20 +310,7 @@ void Embedding_solver::Impl::prepare_handle_terms()
   for(int v = 0; v < n; ++v) handle_constant += anchor[v] * mesh.points.row(v).squaredNorm();
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
-  if(global_step->uses_blocks())
-  {
-    const Eigen::MatrixXd z = handle_solution();
-    b0_z = (b0.array() * z.array()).sum();
-    z_blocks.assign(total_modes, Eigen::Matrix3d::Zero());
-    zlm_blocks.assign(clusters.size(), Eigen::Matrix3d::Zero());
-    for(const Cluster_data& c : clusters)
-    {
-      const Eigen::MatrixXd local = gather(c, z);
-      zlm_blocks[&c - clusters.data()] = local.transpose() * c.laplacian_mean;
-      for(int k = 0; k < c.number_of_modes(); ++k)
-        z_blocks[c.offset + k] = c.laplacian_modes[k].transpose() * local;
-    }
-  }
+  if(global_step->uses_blocks()) schur.set_handle_terms(clusters, b0, handle_solution());
   handle_terms_ready = true;
   // The blocks of the implicit positions depend on the handle terms.
   if(implicit) w_blocks = w_of(coordinates);

@@ -25,16 +25,16 @@ void Embedding_solver::Impl::coordinate_system(Eigen::MatrixXd& s, Eigen::Vector
   std::vector<Eigen::Matrix3d> relative(std::size_t(nc) * nc); // R_d^T R_c at [c * nc + d]
   for(int c = 0; c < nc; ++c)
     for(int d = 0; d < nc; ++d) relative[std::size_t(c) * nc + d] = rotations[d].transpose() * rotations[c];
-  s = s0;
-  r = r0;
+  s = schur.s0;
+  r = schur.r0;
   for(int a = 0; a < dm; ++a)
   {
     const int c = cluster_of_mode[a];
     for(int b = 0; b < dm; ++b)
-      s(a, b) -= trace_product(h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
+      s(a, b) -= trace_product(schur.h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
     for(int d = 0; d < nc; ++d)
-      r[a] += trace_product(g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
-    r[a] += trace_product(z_blocks[a], rotations[c]);
+      r[a] += trace_product(schur.g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
+    r[a] += trace_product(schur.z_blocks[a], rotations[c]);
   }
   s = 0.5 * (s + s.transpose());
 }
@@ -81,20 +81,20 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
     for(int d = 0; d < nc; ++d)
     {
       const Cluster_data& cd = clusters[d];
-      Eigen::Matrix3d entry = plm_blocks[std::size_t(d) * nc + c].transpose();
+      Eigen::Matrix3d entry = schur.plm_blocks[std::size_t(d) * nc + c].transpose();
       for(int l = 0; l < cd.number_of_modes(); ++l)
-        entry += lambda[cd.offset + l] * qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
+        entry += lambda[cd.offset + l] * schur.qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
       for(int k = 0; k < cc.number_of_modes(); ++k)
       {
         const double lk = lambda[cc.offset + k];
-        entry += lk * g_blocks[std::size_t(cc.offset + k) * nc + d];
+        entry += lk * schur.g_blocks[std::size_t(cc.offset + k) * nc + d];
         for(int l = 0; l < cd.number_of_modes(); ++l)
-          entry += lk * lambda[cd.offset + l] * h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
+          entry += lk * lambda[cd.offset + l] * schur.h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
       }
       w[std::size_t(c) * nc + d] = entry;
     }
-    Eigen::Matrix3d z = zlm_blocks[c].transpose();
-    for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * z_blocks[cc.offset + k];
+    Eigen::Matrix3d z = schur.zlm_blocks[c].transpose();
+    for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * schur.z_blocks[cc.offset + k];
     w[std::size_t(nc) * nc + c] = z;
   }
   return w;
@@ -106,10 +106,10 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
 double Embedding_solver::Impl::reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const
 {
   const int nc = static_cast<int>(clusters.size());
-  double e = mean_energy.sum() - 2. * r0.dot(lambda) + lambda.dot((mode_gram + coupling) * lambda) + handle_constant;
+  double e = schur.mean_energy.sum() - 2. * schur.r0.dot(lambda) + lambda.dot((schur.mode_gram + coupling) * lambda) + handle_constant;
   for(const Cluster_data& c : clusters)
     for(int k = 0; k < c.number_of_modes(); ++k) e += c.prior[k] * lambda[c.offset + k] * lambda[c.offset + k];
-  double b_a_b = b0_z;
+  double b_a_b = schur.b0_z;
   for(int c = 0; c < nc; ++c)
   {
     for(int d = 0; d < nc; ++d)

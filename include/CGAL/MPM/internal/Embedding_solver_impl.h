@@ -8,13 +8,15 @@
 // energies (embedding_solver_steps.cpp), the three global steps
 // (embedding_solver_global_steps.cpp), and the iterations and the public
 // API (embedding_solver.cpp). Parts with one job each have their own
-// headers: the factored vertex block (Vertex_block.h) and the rotation fit
+// headers: the factored vertex block (Vertex_block.h), the blocks of its
+// inverse the fast steps use (Schur_blocks.h) and the rotation fit
 // (Rotation_groups.h).
 
 #include <CGAL/MPM/Embedding_solver.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Rotation_groups.h>
 #include <CGAL/MPM/internal/Rotation_lbfgs.h>
+#include <CGAL/MPM/internal/Schur_blocks.h>
 #include <CGAL/MPM/internal/Vertex_block.h>
 
 #include <Eigen/Core>
@@ -92,24 +94,11 @@ struct Embedding_solver::Impl
   // implicit positions of the current state until refactored.
   std::unique_ptr<internal::embedding::Vertex_block> block;
   bool factored = false;
-  std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base; // blocks of A_f
   bool handle_terms_ready = false;
   Eigen::VectorXd anchor;         // per-vertex anchor weight
-
-  // Schur blocks, 3x3 each: H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d,
-  // Gz[ck] = (L_c B_ck)^T Z, with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
-  std::vector<Eigen::Matrix3d> h_blocks, g_blocks, z_blocks;
+  internal::embedding::Schur_blocks schur; // with the schur and reduced steps
   Eigen::MatrixXd coupling;       // coupled-coordinates term, total_modes x total_modes
-  Eigen::MatrixXd mode_gram;      // <B_ck, L_c B_cl>, block diagonal
-  Eigen::VectorXd mean_energy;    // <M_c, L_c M_c> per cluster
-  // For the reduced step, with X_c = L_c (M_c + sum_k lambda_ck B_ck):
-  // plm[d][c] = P_d^T L_c M_c, qlm[dl][c] = Q_dl^T L_c M_c, zlm[c] = Z^T L_c M_c,
-  // so that W[c][d] = X_c^T A11^-1 X_d is a short sum of blocks.
-  std::vector<Eigen::Matrix3d> plm_blocks, qlm_blocks, zlm_blocks;
   double handle_constant = 0.;    // sum w_h |y_h|^2 + anchors
-  double b0_z = 0.;               // <b0, Z>
-  Eigen::MatrixXd s0;             // constant part of the Schur complement
-  Eigen::VectorXd r0;             // constant part of its right-hand side
   Point_matrix b0;                // handle and anchor right-hand side
   // A11^-1 of each handle's unit right-hand side and of the anchors' part of
   // b0, for the handle set `handle_columns_for` (handle_solution()).
@@ -141,7 +130,6 @@ struct Embedding_solver::Impl
   Eigen::VectorXd diagonal_terms(const std::vector<int>& handles) const;
   void factor();
   bool update_handle_set(const std::vector<int>& vertices);
-  void apply_update();
   Point_matrix anchor_right_hand_side() const;
   Eigen::MatrixXd handle_solution();
   void prepare_handle_terms();
