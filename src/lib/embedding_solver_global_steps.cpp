@@ -51,11 +51,13 @@ struct Embedding_solver::Impl::Direct_step final : Global_step_method
     const Sparse& system = s.block->factored_matrix();
     for(int a = 0; a < 3; ++a)
       for(int k = 0; k < system.outerSize(); ++k)
-        for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * s.n + it.row(), a * s.n + it.col(), it.value());
+        for(Sparse::InnerIterator it(system, k); it; ++it)
+          t.emplace_back(a * s.n + it.row(), a * s.n + it.col(), it.value());
     const std::vector<int>& update_vertices = s.block->update_vertices();
+    const Eigen::VectorXd& update_weights = s.block->update_weights();
     for(std::size_t u = 0; u < update_vertices.size(); ++u)
       for(int a = 0; a < 3; ++a)
-        t.emplace_back(a * s.n + update_vertices[u], a * s.n + update_vertices[u], s.block->update_weights()[Eigen::Index(u)]);
+        t.emplace_back(a * s.n + update_vertices[u], a * s.n + update_vertices[u], update_weights[Eigen::Index(u)]);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
     for(int a = 0; a < 3; ++a) rhs.segment(a * s.n, s.n) = s.b0.col(a);
     Eigen::MatrixXd lambda_block = s.coupling;

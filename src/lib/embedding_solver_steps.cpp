@@ -106,7 +106,8 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
 double Embedding_solver::Impl::reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const
 {
   const int nc = static_cast<int>(clusters.size());
-  double e = schur.mean_energy.sum() - 2. * schur.r0.dot(lambda) + lambda.dot((schur.mode_gram + coupling) * lambda) + handle_constant;
+  double e = schur.mean_energy.sum() - 2. * schur.r0.dot(lambda) + lambda.dot((schur.mode_gram + coupling) * lambda) +
+             handle_constant;
   for(const Cluster_data& c : clusters)
     for(int k = 0; k < c.number_of_modes(); ++k) e += c.prior[k] * lambda[c.offset + k] * lambda[c.offset + k];
   double b_a_b = schur.b0_z;
@@ -319,9 +320,12 @@ double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::Vec
     const Cluster_data& d = clusters[c];
     const Point_matrix m = target_shape(d, lambda);
     for(const Weighted_edge& edge : d.edges)
+    {
+      const Eigen::Matrix3d transform = rotation_groups.edge_transform(static_cast<int>(c), edge, rotations);
       e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])).transpose() -
-                     rotation_groups.edge_transform(static_cast<int>(c), edge, rotations) * (m.row(edge.i) - m.row(edge.j)).transpose())
+                     transform * (m.row(edge.i) - m.row(edge.j)).transpose())
                       .squaredNorm();
+    }
     for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
   }
   if(only >= 0) return e;

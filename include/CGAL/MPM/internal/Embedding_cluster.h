@@ -68,7 +68,10 @@ inline Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& glob
 }
 
 /// `<a, b^T>`: the trace of `a b`.
-inline double trace_product(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a.array() * b.transpose().array()).sum(); }
+inline double trace_product(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
+{
+  return (a.array() * b.transpose().array()).sum();
+}
 
 } // namespace embedding
 } // namespace internal
