@@ -3,15 +3,12 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Editing/Laplacian_editing.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
+#include <CGAL/MPM/internal/Cotangent_weights.h>
 #include <CGAL/MPM/internal/Vertex_components.h>
 
-#include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <cmath>
-#include <map>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -20,46 +17,12 @@ namespace MPM {
 Eigen::SparseMatrix<double> cotangent_laplacian(const Indexed_mesh& mesh)
 {
   const int n = mesh.number_of_vertices();
-  // Per edge (i < j): summed weight, and whether any triangle gave a usable one.
-  std::map<std::pair<int, int>, std::pair<double, bool>> edges;
   for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-  {
-    const Triangle& t = mesh.triangles[f];
-    for(int corner : t)
+    for(int corner : mesh.triangles[f])
       if(corner < 0 || corner >= n)
         throw Input_error("Laplacian", "face " + std::to_string(f),
                           "vertex " + std::to_string(corner) + " is out of range");
-    for(int k = 0; k < 3; ++k)
-    {
-      const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-      if(i == j) continue;
-      const Eigen::RowVector3d a = mesh.points.row(i) - mesh.points.row(t[k]);
-      const Eigen::RowVector3d b = mesh.points.row(j) - mesh.points.row(t[k]);
-      const double cross = a.cross(b).norm();
-      double w = cross > 0 ? 0.5 * a.dot(b) / cross : 0.;
-      const bool usable = std::isfinite(w) && cross > 1e-14 * a.norm() * b.norm();
-      if(!usable) w = 0.;
-      auto& e = edges[{std::min(i, j), std::max(i, j)}];
-      e.first += std::max(w, 0.); // clamp negative cotangents: keeps L positive semi-definite
-      e.second = e.second || usable;
-    }
-  }
-  std::vector<Eigen::Triplet<double>> triplets;
-  std::vector<double> diagonal(std::size_t(n), 0.);
-  for(const auto& [edge, value] : edges)
-  {
-    double w = value.first;
-    if(!value.second || !(w > 0) || !std::isfinite(w)) w = 1.; // degenerate: uniform
-    triplets.emplace_back(edge.first, edge.second, -w);
-    triplets.emplace_back(edge.second, edge.first, -w);
-    diagonal[std::size_t(edge.first)] += w;
-    diagonal[std::size_t(edge.second)] += w;
-  }
-  for(int i = 0; i < n; ++i)
-    if(diagonal[std::size_t(i)] != 0.) triplets.emplace_back(i, i, diagonal[std::size_t(i)]);
-  Eigen::SparseMatrix<double> L(n, n);
-  L.setFromTriplets(triplets.begin(), triplets.end());
-  return L;
+  return internal::edge_weight_laplacian(internal::cotangent_weights(mesh.points, mesh.triangles), n);
 }
 
 struct Laplacian_editing::Impl

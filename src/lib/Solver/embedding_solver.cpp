@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 
 namespace CGAL {
 namespace MPM {
@@ -63,70 +62,28 @@ double Embedding_solver::iterate()
   using Clock = std::chrono::steady_clock;
   Iteration_timings& t = d.timings;
   t = Iteration_timings();
-  const Clock::time_point start = Clock::now();
-  Clock::time_point mark = start;
-  const auto lap = [&mark](double& ms) {
-    const Clock::time_point now = Clock::now();
-    ms += std::chrono::duration<double, std::milli>(now - mark).count();
-    mark = now;
-  };
   struct Total // also on the way out by an exception
   {
     double& ms;
     Clock::time_point start;
     ~Total() { ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-  } total{t.total_ms, start};
+  } total{t.total_ms, Clock::now()};
+  internal::Lap_timer clock;
   const std::vector<Eigen::Matrix3d> previous_rotations = d.rotations;
   if(d.implicit) d.reduced_local_step();
   else d.local_step();
-  lap(t.local_step_ms);
+  t.local_step_ms += clock.lap();
   try
   {
-    switch(d.options.global_step)
-    {
-    case Global_step::reduced:
-    {
-      const double e = d.settle_at_rotations(&t);
-      ++d.iterations_since_reset;
-      return e;
-    }
-    case Global_step::schur:
-    case Global_step::direct:
-    {
-      Point_matrix v;
-      Eigen::VectorXd lambda;
-      if(d.options.global_step == Global_step::schur)
-      {
-        lambda = d.solve_coordinates();
-        lap(t.schur_ms);
-        const Eigen::MatrixXd rhs = d.positions_rhs(lambda);
-        lap(t.right_hand_side_ms);
-        v = d.solve_a11(rhs);
-        lap(t.back_substitution_ms);
-      }
-      else
-      {
-        d.global_step_direct(v, lambda);
-        lap(t.direct_ms);
-      }
-      d.check_finite(v, lambda);
-      mark = Clock::now();
-      const double e = d.energy_of(v, lambda);
-      lap(t.energy_ms);
-      if(!std::isfinite(e)) d.fail_on_non_finite_energy(v, lambda);
-      d.positions = std::move(v);
-      d.coordinates = std::move(lambda);
-      ++d.iterations_since_reset;
-      return e;
-    }
-    }
+    const double e = d.global_step->step(d, t);
+    ++d.iterations_since_reset;
+    return e;
   }
   catch(...)
   {
     d.rotations = previous_rotations;
     throw;
   }
-  return 0.;
 }
 
 Solve_report Embedding_solver::solve()
@@ -158,13 +115,13 @@ Solve_report Embedding_solver::solve_from_current_state()
   // iterations (measured on the 36 real-mesh edits of quality_real_meshes:
   // 3-7 iterations, against 31-100 with the extrapolations below, which
   // Newton's step leaves nothing to add to: 3-11 with both).
-  const bool newton = d.options.global_step == Global_step::reduced && d.options.newton &&
+  const bool newton = d.global_step->implicit_positions() && d.options.newton &&
                       d.options.rotations == Rotations::per_cluster;
   double damping = 1e-6;
   // Otherwise L-BFGS on the rotations (reduced step only). Memory measured
   // on the 36 real-mesh edits: 3 pairs 8% more iterations than 8, 20 pairs
   // 8% fewer.
-  const bool quasi_newton = !newton && d.options.global_step == Global_step::reduced && d.options.quasi_newton;
+  const bool quasi_newton = !newton && d.global_step->implicit_positions() && d.options.quasi_newton;
   // Each iteration evaluates one extrapolation of the local/global step: the
   // L-BFGS step, or Anderson's once L-BFGS failed three times in a row to do
   // better, until Anderson's fails in turn. Which one wins depends on the
@@ -228,7 +185,7 @@ Solve_report Embedding_solver::solve_from_current_state()
   }
   // Reduced energies are differences of large sums; the reported residual is
   // evaluated exactly at the final positions.
-  if(d.options.global_step == Global_step::reduced && !report.energies.empty()) report.energies.back() = energy();
+  if(d.global_step->implicit_positions() && !report.energies.empty()) report.energies.back() = energy();
   return report;
 }
 
@@ -244,7 +201,17 @@ Eigen::VectorXd Embedding_solver::coordinates(int c) const
   return impl_->coordinates.segment(d.offset, d.number_of_modes());
 }
 
-const Eigen::Matrix3d& Embedding_solver::rotation(int c) const { return impl_->rotations.at(c); }
+const Eigen::Matrix3d& Embedding_solver::rotation(int c) const
+{
+  // With a rotation per vertex, a cluster has none of its own to report.
+  static const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  if(impl_->options.rotations == Rotations::per_vertex)
+  {
+    static_cast<void>(impl_->clusters.at(c)); // throws on a bad index, as for one rotation per cluster
+    return identity;
+  }
+  return impl_->rotations.at(c);
+}
 
 double Embedding_solver::energy() const
 {

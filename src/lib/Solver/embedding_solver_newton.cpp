@@ -84,16 +84,16 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
   for(int m = 0; m < dm; ++m)
   {
     const int own = cluster_of_mode[m];
-    Eigen::Matrix3d in_own = z_blocks[m].transpose();
-    for(int d = 0; d < nc; ++d) in_own += rotations[d] * qlm_blocks[std::size_t(m) * nc + d].transpose();
+    Eigen::Matrix3d in_own = schur.z_blocks[m].transpose();
+    for(int d = 0; d < nc; ++d) in_own += rotations[d] * schur.qlm_blocks[std::size_t(m) * nc + d].transpose();
     for(int k = 0; k < dm; ++k)
-      in_own += coordinates[k] * rotations[cluster_of_mode[k]] * h_blocks[std::size_t(k) * dm + m];
+      in_own += coordinates[k] * rotations[cluster_of_mode[k]] * schur.h_blocks[std::size_t(k) * dm + m];
     for(int c = 0; c < nc; ++c)
     {
       const Cluster_data& cc = clusters[c];
-      Eigen::Matrix3d derivative = g_blocks[std::size_t(m) * nc + c];
+      Eigen::Matrix3d derivative = schur.g_blocks[std::size_t(m) * nc + c];
       for(int l = 0; l < cc.number_of_modes(); ++l)
-        derivative += coordinates[cc.offset + l] * h_blocks[std::size_t(m) * dm + cc.offset + l];
+        derivative += coordinates[cc.offset + l] * schur.h_blocks[std::size_t(m) * dm + cc.offset + l];
       derivative = rotations[own] * derivative;
       if(c == own) derivative += in_own;
       for(int i = 0; i < 3; ++i) mixed(3 * c + i, m) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
@@ -159,7 +159,7 @@ double Embedding_solver::Impl::newton_improve(double energy, double& damping)
   // Reduced energies are differences of large sums (reduced_energy()): a
   // decrease below their rounding is noise, and a step taken on it moves
   // an exact solution (the rest under caricature factor 1) off by 1e-8.
-  const double rounding = 1e-13 * (std::abs(mean_energy.sum()) + std::abs(handle_constant) + std::abs(b0_z));
+  const double rounding = 1e-13 * (std::abs(schur.mean_energy.sum()) + std::abs(handle_constant) + std::abs(schur.b0_z));
   const int nc = static_cast<int>(clusters.size());
   if(nc == 0 || energy <= rounding) return energy;
   const Eigen::MatrixXd hessian = reduced_hessian();

@@ -5,9 +5,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
-
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Weights/utils.h>
+#include <CGAL/MPM/internal/Cotangent_weights.h>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -20,14 +18,6 @@ namespace CGAL {
 namespace MPM {
 
 using namespace internal::embedding;
-
-namespace {
-
-using Kernel = CGAL::Simple_cartesian<double>;
-
-Kernel::Point_3 point(const Point_matrix& p, int i) { return Kernel::Point_3(p(i, 0), p(i, 1), p(i, 2)); }
-
-} // namespace
 
 Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_options& o)
   : options(o), mesh(problem.mesh), n(problem.mesh.number_of_vertices())
@@ -101,11 +91,11 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
 
   // Per-vertex rotations have no rotation-commuting structure to exploit.
   if(options.rotations == Rotations::per_vertex) options.global_step = Global_step::direct;
+  global_step = make_global_step(options.global_step);
   positions = mesh.points;
   coordinates = Eigen::VectorXd::Zero(total_modes);
-  rotations.assign(clusters.size(), Eigen::Matrix3d::Identity());
-  if(options.rotations == Rotations::per_vertex)
-    for(const Cluster_data& c : clusters) vertex_rotations.emplace_back(c.vertices.size(), Eigen::Matrix3d::Identity());
+  rotation_groups = Rotation_groups(clusters, options.rotations);
+  rotations.assign(std::size_t(rotation_groups.size()), Eigen::Matrix3d::Identity());
   compute_anchor();
   local_step();
 }
@@ -135,32 +125,10 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   d.vertices = c.vertices;
   d.mean = c.mean;
 
-  // Cotangent weights measured on the mean: half the cotangent of the
-  // opposite angle per adjacent triangle. Negative ones are clamped (to a
-  // small fraction of the mean weight) so that the matrix stays positive
-  // definite and no edge is left without stiffness. Large ones are bounded
-  // as CGAL's clamped cotangent bounds them (cosine within +-0.999, as in
-  // its ARAP deformation): a sliver of a scanned mesh (cotangent 4e14 on a
-  // PSB octopus) otherwise drowned the whole system in rounding, and the
-  // energy rose from the rest pose.
-  const double largest_cotangent = 0.999 / std::sqrt(1. - 0.999 * 0.999);
-  std::map<std::pair<int, int>, double> cotangent;
-  for(const Triangle& t : c.triangles)
-    for(int k = 0; k < 3; ++k)
-    {
-      const int a = t[k], b = t[(k + 1) % 3], o = t[(k + 2) % 3];
-      const double cot = CGAL::Weights::cotangent(point(c.mean, a), point(c.mean, o), point(c.mean, b));
-      cotangent[{std::min(a, b), std::max(a, b)}] += std::isfinite(cot) ? 0.5 * std::min(cot, largest_cotangent) : 0.;
-    }
-  double positive_sum = 0.;
-  int positive_count = 0;
-  for(const auto& [e, w] : cotangent)
-    if(w > 0)
-    {
-      positive_sum += w;
-      ++positive_count;
-    }
-  const double floor_weight = 1e-2 * (positive_count > 0 ? positive_sum / positive_count : 1.);
+  // Cotangent weights measured on the mean, under the package's one clamping
+  // rule (internal/Cotangent_weights.h): a sliver of a scanned mesh would
+  // otherwise drown the system in rounding.
+  const std::map<std::pair<int, int>, double> cotangent = internal::cotangent_weights(c.mean, c.triangles);
 
   std::vector<double> blend(nc, 1.);
   if(!c.border.empty())
@@ -178,7 +146,7 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   {
     double w = 1.; // uniform on virtual and non-manifold edges
     const auto it = cotangent.find({std::min(e.source, e.target), std::max(e.source, e.target)});
-    if(!e.is_virtual && it != cotangent.end()) w = std::max(it->second, floor_weight);
+    if(!e.is_virtual && it != cotangent.end()) w = it->second;
     // The blend fades a cluster toward its border, but never to exactly zero.
     w *= std::max(0.5 * (blend[e.source] + blend[e.target]), 1e-3) * inverse_variance;
     d.edges.push_back({e.source, e.target, w});
@@ -201,20 +169,6 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
   d.offset = total_modes;
   total_modes += c.modes.cols();
   clusters.push_back(std::move(d));
-}
-
-Eigen::MatrixXd Embedding_solver::Impl::scatter(const Cluster_data& c, const Point_matrix& local) const
-{
-  Eigen::MatrixXd global = Eigen::MatrixXd::Zero(n, 3);
-  for(std::size_t i = 0; i < c.vertices.size(); ++i) global.row(c.vertices[i]) += local.row(i);
-  return global;
-}
-
-Eigen::MatrixXd Embedding_solver::Impl::gather(const Cluster_data& c, const Eigen::MatrixXd& global) const
-{
-  Eigen::MatrixXd local(c.vertices.size(), global.cols());
-  for(std::size_t i = 0; i < c.vertices.size(); ++i) local.row(i) = global.row(c.vertices[i]);
-  return local;
 }
 
 Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const
@@ -273,14 +227,10 @@ Eigen::VectorXd Embedding_solver::Impl::diagonal_terms(const std::vector<int>& h
 
 void Embedding_solver::Impl::factor()
 {
-  factored_diagonal = diagonal_terms(handle_vertices);
-  system = elastic;
-  for(int v = 0; v < n; ++v) system.coeffRef(v, v) += factored_diagonal[v];
-  system.makeCompressed();
-  solver = make_vertex_block_solver(options.sparse_solver);
-  if(!solver->factor(system))
+  std::unique_ptr<Vertex_block> replacement = make_vertex_block(options.sparse_solver);
+  if(!replacement->factor(elastic, diagonal_terms(handle_vertices)))
   {
-    const int row = solver->weakest_row();
+    const int row = replacement->weakest_row();
     std::string where = "a cluster may be degenerate";
     for(const Cluster_data& c : clusters)
       if(row >= 0 && std::find(c.vertices.begin(), c.vertices.end(), row) != c.vertices.end())
@@ -290,89 +240,12 @@ void Embedding_solver::Impl::factor()
       }
     throw Computation_error("embedding: the vertex block is not positive definite (" + where + ")");
   }
+  block = std::move(replacement);
   factored = true;
   handle_terms_ready = false;
   handle_columns_valid = false;
-  update_vertices.clear();
-  update_weights.resize(0);
-  update_columns.resize(n, 0);
 
-  if(options.global_step == Global_step::direct) return;
-  const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  mode_gram = Eigen::MatrixXd::Zero(dm, dm);
-  mean_energy.resize(nc);
-  r0 = Eigen::VectorXd::Zero(dm);
-  for(const Cluster_data& c : clusters)
-  {
-    mean_energy[&c - clusters.data()] = (c.mean.array() * c.laplacian_mean.array()).sum();
-    for(int k = 0; k < c.number_of_modes(); ++k)
-    {
-      for(int l = 0; l < c.number_of_modes(); ++l)
-        mode_gram(c.offset + k, c.offset + l) = (c.modes[k].array() * c.laplacian_modes[l].array()).sum();
-      r0[c.offset + k] = -(c.modes[k].array() * c.laplacian_mean.array()).sum();
-    }
-  }
-  s0 = mode_gram + coupling;
-  for(const Cluster_data& c : clusters)
-    for(int k = 0; k < c.number_of_modes(); ++k) s0(c.offset + k, c.offset + k) += c.prior[k];
-  h_blocks.assign(std::size_t(dm) * dm, Eigen::Matrix3d::Zero());
-  g_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
-  qlm_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
-  plm_blocks.assign(std::size_t(nc) * nc, Eigen::Matrix3d::Zero());
-  // Right-hand sides are solved in batches to bound memory on large models.
-  const int columns = dm + nc;
-  const int batch = 16;
-  for(int first = 0; first < columns; first += batch)
-  {
-    const int count = std::min(batch, columns - first);
-    Eigen::MatrixXd rhs(n, 3 * count);
-    for(int j = 0; j < count; ++j)
-    {
-      const int column = first + j;
-      if(column < dm)
-      {
-        const Cluster_data& d = clusters[cluster_of_mode[column]];
-        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset]);
-      }
-      else
-        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean);
-    }
-    const Eigen::MatrixXd solved = solver->solve(rhs); // of A_f: the update is applied below
-    for(const Cluster_data& c : clusters)
-    {
-      const int ci = static_cast<int>(&c - clusters.data());
-      const Eigen::MatrixXd local = gather(c, solved);
-      for(int j = 0; j < count; ++j)
-      {
-        const int column = first + j;
-        const Eigen::Matrix3d with_mean = local.middleCols<3>(3 * j).transpose() * c.laplacian_mean;
-        if(column < dm) qlm_blocks[std::size_t(column) * nc + ci] = with_mean;
-        else plm_blocks[std::size_t(column - dm) * nc + ci] = with_mean;
-        for(int k = 0; k < c.number_of_modes(); ++k)
-        {
-          const Eigen::Matrix3d block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
-          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = block;
-          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = block;
-        }
-      }
-    }
-  }
-  h_base = h_blocks;
-  g_base = g_blocks;
-  plm_base = plm_blocks;
-  qlm_base = qlm_blocks;
-}
-
-Eigen::MatrixXd Embedding_solver::Impl::solve_a11(const Eigen::MatrixXd& rhs) const
-{
-  Eigen::MatrixXd x = solver->solve(rhs);
-  if(!update_vertices.empty())
-  {
-    Eigen::MatrixXd at_updates(update_vertices.size(), x.cols());
-    for(std::size_t u = 0; u < update_vertices.size(); ++u) at_updates.row(u) = x.row(update_vertices[u]);
-    x -= update_columns * (capacitance_inverse * at_updates);
-  }
-  return x;
+  if(global_step->uses_blocks()) schur.build(clusters, cluster_of_mode, coupling, *block);
 }
 
 // Accepts `vertices` as a low-rank change of the factored block when few
@@ -383,80 +256,10 @@ Eigen::MatrixXd Embedding_solver::Impl::solve_a11(const Eigen::MatrixXd& rhs) co
 bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
 {
   constexpr Eigen::Index max_update = 64;
-  if(!factored) return false;
-  const Eigen::VectorXd change = diagonal_terms(vertices) - factored_diagonal;
-  if((change.array() != 0.).count() > max_update) return false;
-  update_vertices.clear();
-  std::vector<double> weights;
-  for(int v = 0; v < n; ++v)
-    if(change[v] != 0.)
-    {
-      update_vertices.push_back(v);
-      weights.push_back(change[v]);
-    }
-  update_weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), Eigen::Index(weights.size()));
-  apply_update();
-  return true;
-}
-
-void Embedding_solver::Impl::apply_update()
-{
+  if(!factored || !block->update(diagonal_terms(vertices), max_update)) return false;
   handle_columns_valid = false;
-  const int k = static_cast<int>(update_vertices.size());
-  if(k == 0)
-  {
-    update_columns.resize(n, 0);
-    h_blocks = h_base;
-    g_blocks = g_base;
-    plm_blocks = plm_base;
-    qlm_blocks = qlm_base;
-    return;
-  }
-  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, k);
-  for(int u = 0; u < k; ++u) unit(update_vertices[u], u) = 1.;
-  update_columns = solver->solve(unit);
-  Eigen::MatrixXd capacitance(k, k);
-  for(int u = 0; u < k; ++u) capacitance.row(u) = update_columns.row(update_vertices[u]);
-  capacitance.diagonal() += update_weights.cwiseInverse();
-  capacitance_inverse = capacitance.inverse();
-  if(options.global_step == Global_step::direct) return;
-
-  // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
-  // X^T A^-1 Y = X^T A_f^-1 Y - T_X^T K^-1 T_Y.
-  const int dm = total_modes, nc = static_cast<int>(clusters.size());
-  std::vector<Eigen::MatrixXd> t_mean(nc), t_mode(dm);
-  for(int c = 0; c < nc; ++c)
-  {
-    const Cluster_data& d = clusters[c];
-    const Eigen::MatrixXd local = gather(d, update_columns);
-    t_mean[c] = local.transpose() * d.laplacian_mean;
-    for(int m = 0; m < d.number_of_modes(); ++m) t_mode[d.offset + m] = local.transpose() * d.laplacian_modes[m];
-  }
-  const auto correction = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) -> Eigen::Matrix3d {
-    return x.transpose() * (capacitance_inverse * y);
-  };
-  for(int a = 0; a < dm; ++a)
-  {
-    for(int b = 0; b < dm; ++b)
-      h_blocks[std::size_t(a) * dm + b] = h_base[std::size_t(a) * dm + b] - correction(t_mode[a], t_mode[b]);
-    for(int d = 0; d < nc; ++d)
-    {
-      g_blocks[std::size_t(a) * nc + d] = g_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
-      qlm_blocks[std::size_t(a) * nc + d] = qlm_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
-    }
-  }
-  for(int d = 0; d < nc; ++d)
-    for(int c = 0; c < nc; ++c)
-      plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
-}
-
-// A11 x for the updated block: the factored matrix plus the low-rank update.
-Eigen::MatrixXd Embedding_solver::Impl::updated_product(const Eigen::MatrixXd& x) const
-{
-  Eigen::MatrixXd product = system * x;
-  for(std::size_t u = 0; u < update_vertices.size(); ++u)
-    product.row(update_vertices[u]) += update_weights[Eigen::Index(u)] * x.row(update_vertices[u]);
-  return product;
+  if(global_step->uses_blocks()) schur.update(clusters, *block);
+  return true;
 }
 
 // The anchors' part of b0: each anchored vertex pulled to its rest position.
@@ -475,19 +278,19 @@ Point_matrix Embedding_solver::Impl::anchor_right_hand_side() const
 Eigen::MatrixXd Embedding_solver::Impl::handle_solution()
 {
   constexpr std::size_t max_kept_columns = 48;
-  if(handle_vertices.size() > max_kept_columns) return solve_a11(b0);
+  if(handle_vertices.size() > max_kept_columns) return block->solve(b0);
   if(!handle_columns_valid || handle_columns_for != handle_vertices)
   {
     const Eigen::Index k = Eigen::Index(handle_vertices.size());
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, k + 3);
     for(Eigen::Index h = 0; h < k; ++h) rhs(handle_vertices[std::size_t(h)], h) = 1.;
     rhs.rightCols<3>() = anchor_right_hand_side();
-    Eigen::MatrixXd solved = solve_a11(rhs);
+    Eigen::MatrixXd solved = block->solve(rhs);
     // Through a low-rank update the solutions carry a larger rounding, which
     // the reduced energy (the handle constant minus b0^T z, two sums of the
     // handles' stiffness times their squared targets) would magnify: one
     // step of iterative refinement against the updated block.
-    if(!update_vertices.empty()) solved += solve_a11(rhs - updated_product(solved));
+    if(!block->update_vertices().empty()) solved += block->solve(rhs - block->product(solved));
     handle_columns = solved.leftCols(k);
     anchor_solution = solved.rightCols<3>();
     handle_columns_for = handle_vertices;
@@ -507,20 +310,7 @@ void Embedding_solver::Impl::prepare_handle_terms()
   for(int v = 0; v < n; ++v) handle_constant += anchor[v] * mesh.points.row(v).squaredNorm();
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
-  if(options.global_step != Global_step::direct)
-  {
-    const Eigen::MatrixXd z = handle_solution();
-    b0_z = (b0.array() * z.array()).sum();
-    z_blocks.assign(total_modes, Eigen::Matrix3d::Zero());
-    zlm_blocks.assign(clusters.size(), Eigen::Matrix3d::Zero());
-    for(const Cluster_data& c : clusters)
-    {
-      const Eigen::MatrixXd local = gather(c, z);
-      zlm_blocks[&c - clusters.data()] = local.transpose() * c.laplacian_mean;
-      for(int k = 0; k < c.number_of_modes(); ++k)
-        z_blocks[c.offset + k] = c.laplacian_modes[k].transpose() * local;
-    }
-  }
+  if(global_step->uses_blocks()) schur.set_handle_terms(clusters, b0, handle_solution());
   handle_terms_ready = true;
   // The blocks of the implicit positions depend on the handle terms.
   if(implicit) w_blocks = w_of(coordinates);

@@ -5,10 +5,8 @@
 #include <CGAL/MPM/Input_error.h>
 
 #include <Eigen/Cholesky>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -17,41 +15,7 @@ namespace MPM {
 
 using namespace internal::embedding;
 
-void Embedding_solver::Impl::local_step()
-{
-  for(std::size_t c = 0; c < clusters.size(); ++c)
-  {
-    const Cluster_data& d = clusters[c];
-    if(options.rotations == Rotations::per_vertex)
-    {
-      // Each point's rotation fits its incident edges (its one-ring in the cluster).
-      const Point_matrix m = target_shape(d, coordinates);
-      std::vector<Eigen::Matrix3d> covariance(d.vertices.size(), Eigen::Matrix3d::Zero());
-      for(const Weighted_edge& e : d.edges)
-      {
-        const Eigen::Vector3d edge = (positions.row(d.vertices[e.i]) - positions.row(d.vertices[e.j])).transpose();
-        const Eigen::Vector3d rest = (m.row(e.i) - m.row(e.j)).transpose();
-        const Eigen::Matrix3d k = e.w * edge * rest.transpose();
-        covariance[e.i] += k;
-        covariance[e.j] += k;
-      }
-      for(std::size_t i = 0; i < d.vertices.size(); ++i) vertex_rotations[c][i] = closest_rotation(covariance[i]);
-      continue;
-    }
-    Point_matrix lm = d.laplacian_mean;
-    for(int k = 0; k < d.number_of_modes(); ++k) lm += coordinates[d.offset + k] * d.laplacian_modes[k];
-    const Eigen::Matrix3d covariance = gather(d, positions).transpose() * lm;
-    rotations[c] = closest_rotation(covariance);
-  }
-}
-
-// The linear map an edge's target vector goes through: the cluster's rotation,
-// or the average of its ends' rotations.
-Eigen::Matrix3d Embedding_solver::Impl::edge_transform(int c, const Weighted_edge& e) const
-{
-  if(options.rotations == Rotations::per_vertex) return 0.5 * (vertex_rotations[c][e.i] + vertex_rotations[c][e.j]);
-  return rotations[c];
-}
+void Embedding_solver::Impl::local_step() { rotation_groups.fit(clusters, positions, coordinates, rotations); }
 
 // The shape-coordinate system S(R) lambda = r(R) at the current rotations:
 // half the Hessian of the energy in the coordinates, and the right-hand side.
@@ -61,16 +25,16 @@ void Embedding_solver::Impl::coordinate_system(Eigen::MatrixXd& s, Eigen::Vector
   std::vector<Eigen::Matrix3d> relative(std::size_t(nc) * nc); // R_d^T R_c at [c * nc + d]
   for(int c = 0; c < nc; ++c)
     for(int d = 0; d < nc; ++d) relative[std::size_t(c) * nc + d] = rotations[d].transpose() * rotations[c];
-  s = s0;
-  r = r0;
+  s = schur.s0;
+  r = schur.r0;
   for(int a = 0; a < dm; ++a)
   {
     const int c = cluster_of_mode[a];
     for(int b = 0; b < dm; ++b)
-      s(a, b) -= trace_product(h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
+      s(a, b) -= trace_product(schur.h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
     for(int d = 0; d < nc; ++d)
-      r[a] += trace_product(g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
-    r[a] += trace_product(z_blocks[a], rotations[c]);
+      r[a] += trace_product(schur.g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
+    r[a] += trace_product(schur.z_blocks[a], rotations[c]);
   }
   s = 0.5 * (s + s.transpose());
 }
@@ -103,7 +67,7 @@ Eigen::MatrixXd Embedding_solver::Impl::positions_rhs(const Eigen::VectorXd& lam
 
 Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambda) const
 {
-  return solve_a11(positions_rhs(lambda));
+  return block->solve(positions_rhs(lambda));
 }
 
 // W[c][d] = X_c^T A11^-1 X_d at [c * nc + d], and X_c^T Z at [nc * nc + c].
@@ -117,20 +81,20 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
     for(int d = 0; d < nc; ++d)
     {
       const Cluster_data& cd = clusters[d];
-      Eigen::Matrix3d block = plm_blocks[std::size_t(d) * nc + c].transpose();
+      Eigen::Matrix3d entry = schur.plm_blocks[std::size_t(d) * nc + c].transpose();
       for(int l = 0; l < cd.number_of_modes(); ++l)
-        block += lambda[cd.offset + l] * qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
+        entry += lambda[cd.offset + l] * schur.qlm_blocks[std::size_t(cd.offset + l) * nc + c].transpose();
       for(int k = 0; k < cc.number_of_modes(); ++k)
       {
         const double lk = lambda[cc.offset + k];
-        block += lk * g_blocks[std::size_t(cc.offset + k) * nc + d];
+        entry += lk * schur.g_blocks[std::size_t(cc.offset + k) * nc + d];
         for(int l = 0; l < cd.number_of_modes(); ++l)
-          block += lk * lambda[cd.offset + l] * h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
+          entry += lk * lambda[cd.offset + l] * schur.h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
       }
-      w[std::size_t(c) * nc + d] = block;
+      w[std::size_t(c) * nc + d] = entry;
     }
-    Eigen::Matrix3d z = zlm_blocks[c].transpose();
-    for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * z_blocks[cc.offset + k];
+    Eigen::Matrix3d z = schur.zlm_blocks[c].transpose();
+    for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * schur.z_blocks[cc.offset + k];
     w[std::size_t(nc) * nc + c] = z;
   }
   return w;
@@ -142,10 +106,11 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
 double Embedding_solver::Impl::reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const
 {
   const int nc = static_cast<int>(clusters.size());
-  double e = mean_energy.sum() - 2. * r0.dot(lambda) + lambda.dot((mode_gram + coupling) * lambda) + handle_constant;
+  double e = schur.mean_energy.sum() - 2. * schur.r0.dot(lambda) + lambda.dot((schur.mode_gram + coupling) * lambda) +
+             handle_constant;
   for(const Cluster_data& c : clusters)
     for(int k = 0; k < c.number_of_modes(); ++k) e += c.prior[k] * lambda[c.offset + k] * lambda[c.offset + k];
-  double b_a_b = b0_z;
+  double b_a_b = schur.b0_z;
   for(int c = 0; c < nc; ++c)
   {
     for(int d = 0; d < nc; ++d)
@@ -193,19 +158,15 @@ Eigen::VectorXd Embedding_solver::Impl::rotation_gradient() const
 // receives the time of each phase.
 double Embedding_solver::Impl::settle_at_rotations(Iteration_timings* timings)
 {
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point mark = Clock::now();
-  const auto lap = [&](double Iteration_timings::*phase) {
-    const Clock::time_point now = Clock::now();
-    if(timings) timings->*phase += std::chrono::duration<double, std::milli>(now - mark).count();
-    mark = now;
-  };
+  Iteration_timings unused;
+  Iteration_timings& t = timings ? *timings : unused;
+  internal::Lap_timer clock;
   Eigen::VectorXd lambda = solve_coordinates();
-  lap(&Iteration_timings::schur_ms);
+  t.schur_ms += clock.lap();
   std::vector<Eigen::Matrix3d> w = w_of(lambda);
-  lap(&Iteration_timings::right_hand_side_ms);
+  t.right_hand_side_ms += clock.lap();
   const double e = reduced_energy(lambda, w);
-  lap(&Iteration_timings::energy_ms);
+  t.energy_ms += clock.lap();
   if(!lambda.allFinite()) check_finite(positions, lambda);
   if(!std::isfinite(e)) fail_on_non_finite_energy(positions_from(lambda), lambda);
   coordinates = std::move(lambda);
@@ -235,7 +196,7 @@ void Embedding_solver::Impl::start_at_rigid_fit_of_handles()
 // count), positions and coordinates otherwise.
 Eigen::VectorXd Embedding_solver::Impl::packed_state() const
 {
-  const bool reduced = options.global_step == Global_step::reduced;
+  const bool reduced = global_step->implicit_positions();
   const int nc = static_cast<int>(clusters.size());
   Eigen::VectorXd x(reduced ? 9 * nc + total_modes : 3 * n + total_modes);
   if(reduced)
@@ -250,7 +211,7 @@ Eigen::VectorXd Embedding_solver::Impl::packed_state() const
 double Embedding_solver::Impl::enter_state(const Eigen::VectorXd& x)
 {
   coordinates = x.tail(total_modes);
-  if(options.global_step == Global_step::reduced)
+  if(global_step->implicit_positions())
   {
     for(int c = 0; c < static_cast<int>(clusters.size()); ++c)
       rotations[c] = closest_rotation(Eigen::Map<const Eigen::Matrix3d>(x.segment<9>(9 * c).data()));
@@ -268,7 +229,7 @@ bool Embedding_solver::Impl::take_if_lower(const Eigen::VectorXd& candidate, con
                                            double& energy)
 {
   const std::vector<Eigen::Matrix3d> plain_rotations = rotations, plain_w = w_blocks;
-  const Point_matrix plain_positions = options.global_step == Global_step::reduced ? Point_matrix() : positions;
+  const Point_matrix plain_positions = global_step->implicit_positions() ? Point_matrix() : positions;
   const double e = candidate.allFinite() ? enter_state(candidate) : std::numeric_limits<double>::infinity();
   if(e < energy)
   {
@@ -278,7 +239,7 @@ bool Embedding_solver::Impl::take_if_lower(const Eigen::VectorXd& candidate, con
   coordinates = plain.tail(total_modes);
   rotations = plain_rotations;
   w_blocks = plain_w;
-  if(options.global_step != Global_step::reduced) positions = plain_positions;
+  if(!global_step->implicit_positions()) positions = plain_positions;
   return false;
 }
 
@@ -350,71 +311,6 @@ const Point_matrix& Embedding_solver::Impl::materialized_positions()
   return positions;
 }
 
-// The reference: the whole quadratic in (x, y, z, lambda), assembled edge by
-// edge (not from the cluster Laplacians the fast paths use) and factored
-// afresh. Slow, simple, and what the fast paths must agree with. With edge
-// transforms T_e, targets t_e = T_e (m_e + sum_k lambda_k b_ke).
-void Embedding_solver::Impl::global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda)
-{
-  const int dm = total_modes, size = 3 * n + dm;
-  std::vector<Eigen::Triplet<double>> t;
-  for(int a = 0; a < 3; ++a)
-    for(int k = 0; k < system.outerSize(); ++k)
-      for(Sparse::InnerIterator it(system, k); it; ++it) t.emplace_back(a * n + it.row(), a * n + it.col(), it.value());
-  for(std::size_t u = 0; u < update_vertices.size(); ++u)
-    for(int a = 0; a < 3; ++a) t.emplace_back(a * n + update_vertices[u], a * n + update_vertices[u], update_weights[u]);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
-  for(int a = 0; a < 3; ++a) rhs.segment(a * n, n) = b0.col(a);
-  Eigen::MatrixXd lambda_block = coupling;
-  for(std::size_t c = 0; c < clusters.size(); ++c)
-  {
-    const Cluster_data& d = clusters[c];
-    const int modes = d.number_of_modes();
-    std::vector<Eigen::Vector3d> mode_edges(modes);
-    for(const Weighted_edge& e : d.edges)
-    {
-      const Eigen::Matrix3d transform = edge_transform(static_cast<int>(c), e);
-      const int gi = d.vertices[e.i], gj = d.vertices[e.j];
-      const Eigen::Vector3d u = transform * (d.mean.row(e.i) - d.mean.row(e.j)).transpose();
-      for(int a = 0; a < 3; ++a)
-      {
-        rhs[a * n + gi] += e.w * u[a];
-        rhs[a * n + gj] -= e.w * u[a];
-      }
-      for(int k = 0; k < modes; ++k)
-      {
-        mode_edges[k] = transform * (d.modes[k].row(e.i) - d.modes[k].row(e.j)).transpose();
-        const int row = 3 * n + d.offset + k;
-        for(int a = 0; a < 3; ++a)
-        {
-          const double value = e.w * mode_edges[k][a];
-          t.emplace_back(row, a * n + gi, -value);
-          t.emplace_back(a * n + gi, row, -value);
-          t.emplace_back(row, a * n + gj, value);
-          t.emplace_back(a * n + gj, row, value);
-        }
-        rhs[row] -= e.w * mode_edges[k].dot(u);
-      }
-      for(int k = 0; k < modes; ++k)
-        for(int l = 0; l < modes; ++l)
-          lambda_block(d.offset + k, d.offset + l) += e.w * mode_edges[k].dot(mode_edges[l]);
-    }
-    for(int k = 0; k < modes; ++k) lambda_block(d.offset + k, d.offset + k) += d.prior[k];
-  }
-  for(int a = 0; a < dm; ++a)
-    for(int b = 0; b < dm; ++b)
-      if(lambda_block(a, b) != 0.) t.emplace_back(3 * n + a, 3 * n + b, lambda_block(a, b));
-  Sparse k(size, size);
-  k.setFromTriplets(t.begin(), t.end());
-  Eigen::SimplicialLDLT<Sparse> ldlt(k);
-  if(ldlt.info() != Eigen::Success || non_positive_pivot_row(ldlt) >= 0)
-    throw Computation_error("embedding: factorization of the full system failed");
-  const Eigen::VectorXd x = ldlt.solve(rhs);
-  v.resize(n, 3);
-  for(int a = 0; a < 3; ++a) v.col(a) = x.segment(a * n, n);
-  lambda = x.tail(dm);
-}
-
 double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only) const
 {
   double e = 0.;
@@ -424,9 +320,12 @@ double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::Vec
     const Cluster_data& d = clusters[c];
     const Point_matrix m = target_shape(d, lambda);
     for(const Weighted_edge& edge : d.edges)
+    {
+      const Eigen::Matrix3d transform = rotation_groups.edge_transform(static_cast<int>(c), edge, rotations);
       e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])).transpose() -
-                     edge_transform(static_cast<int>(c), edge) * (m.row(edge.i) - m.row(edge.j)).transpose())
+                     transform * (m.row(edge.i) - m.row(edge.j)).transpose())
                       .squaredNorm();
+    }
     for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
   }
   if(only >= 0) return e;

@@ -17,9 +17,11 @@ namespace MPM {
 /// The cotangent Laplacian `L` of a triangle mesh (n x n, symmetric,
 /// positive semi-definite, rows summing to zero): `L(i,j) = -w_ij` and
 /// `L(i,i) = sum_j w_ij` with `w_ij` half the sum of the cotangents opposite
-/// edge ij. Negative cotangents are clamped to zero; an edge whose weight
-/// is not finite or zero in every triangle (degenerate triangles) gets the
-/// uniform weight 1. Vertices in no triangle have an empty row.
+/// edge ij, clamped as the embedding solver clamps its own: each cotangent
+/// bounded above as CGAL's clamped cotangent bounds it (cosine 0.999), a
+/// non-finite one counted as zero, and a weight below 1% of the mean
+/// positive weight (negative, or from degenerate triangles only) raised to
+/// it. Vertices in no triangle have an empty row.
 Eigen::SparseMatrix<double> cotangent_laplacian(const Indexed_mesh& mesh);
 
 /// \ingroup PkgMPMRef

@@ -4,19 +4,25 @@
 #define CGAL_MPM_INTERNAL_EMBEDDING_SOLVER_IMPL_H
 
 // The state of `Embedding_solver` shared by its sources: set-up and
-// factorization (embedding_solver_setup.cpp), the local and global steps
-// and energies (embedding_solver_steps.cpp), the iterations and the public
-// API (embedding_solver.cpp), and the factored vertex block
-// (vertex_block_solver.cpp).
+// factorization (embedding_solver_setup.cpp), the reduced step's pieces and
+// energies (embedding_solver_steps.cpp), the three global steps
+// (embedding_solver_global_steps.cpp), and the iterations and the public
+// API (embedding_solver.cpp). Parts with one job each have their own
+// headers: the factored vertex block (Vertex_block.h), the blocks of its
+// inverse the fast steps use (Schur_blocks.h) and the rotation fit
+// (Rotation_groups.h).
 
 #include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Rotation_groups.h>
 #include <CGAL/MPM/internal/Rotation_lbfgs.h>
+#include <CGAL/MPM/internal/Schur_blocks.h>
+#include <CGAL/MPM/internal/Vertex_block.h>
 
 #include <Eigen/Core>
-#include <Eigen/SVD>
 #include <Eigen/SparseCore>
 
+#include <chrono>
 #include <limits>
 #include <memory>
 #include <string>
@@ -25,74 +31,24 @@
 namespace CGAL {
 namespace MPM {
 namespace internal {
-namespace embedding {
 
-using Sparse = Eigen::SparseMatrix<double>;
-
-// The constant vertex block is factored through CGAL's solver traits, so any
-// Eigen-compatible direct solver plugs in the same way.
-class Vertex_block_solver
+// Splits elapsed time into phases.
+class Lap_timer
 {
 public:
-  virtual ~Vertex_block_solver() = default;
-  virtual bool factor(const Sparse& a) = 0;
-  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) = 0;
-  // After a failed factor(): the row with the smallest pivot, or -1 when the
-  // solver does not tell.
-  virtual int weakest_row() const { return -1; }
+  // Milliseconds since the previous lap, or since construction.
+  double lap()
+  {
+    const std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - mark_).count();
+    mark_ = now;
+    return ms;
+  }
+
+private:
+  std::chrono::steady_clock::time_point mark_ = std::chrono::steady_clock::now();
 };
 
-// LDLT factors an indefinite matrix without complaint (LLT refuses it): the
-// pivots say whether the matrix was positive definite, and where not.
-template <class Ldlt>
-int non_positive_pivot_row(const Ldlt& ldlt)
-{
-  const Eigen::VectorXd& pivots = ldlt.vectorD();
-  Eigen::Index weakest = 0;
-  if(pivots.size() == 0) return -1;
-  for(Eigen::Index i = 0; i < pivots.size(); ++i)
-    if(!(pivots[i] >= pivots[weakest])) weakest = i;
-  if(pivots[weakest] > 0) return -1;
-  return ldlt.permutationPinv().indices()[weakest];
-}
-
-// The factored vertex block of `which` kind (see vertex_block_solver.cpp).
-std::unique_ptr<Vertex_block_solver> make_vertex_block_solver(Sparse_solver which);
-
-// Closest rotation (no reflection) to a 3x3 matrix, maximizing <R, k>.
-inline Eigen::Matrix3d closest_rotation(const Eigen::Matrix3d& k)
-{
-  Eigen::JacobiSVD<Eigen::Matrix3d> svd(k, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
-  if((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0) d(2, 2) = -1;
-  return svd.matrixU() * d * svd.matrixV().transpose();
-}
-
-struct Weighted_edge
-{
-  int i, j;
-  double w;
-};
-
-struct Cluster_data
-{
-  std::string name;
-  std::vector<int> vertices;
-  std::vector<Weighted_edge> edges;   // weights include sigma_sub^-2 and the blend
-  Sparse laplacian;                   // local, n_c x n_c
-  Point_matrix mean;
-  std::vector<Point_matrix> modes;    // n_c x 3 each
-  Eigen::VectorXd prior;              // 1 / (4 sigma_k^2)
-  Point_matrix laplacian_mean;        // L M
-  std::vector<Point_matrix> laplacian_modes; // L B_k
-  int offset = 0;                     // of its coordinates in the stacked vector
-  int number_of_modes() const { return static_cast<int>(modes.size()); }
-};
-
-// <a, b^T>: the trace of a b.
-inline double trace_product(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a.array() * b.transpose().array()).sum(); }
-
-} // namespace embedding
 } // namespace internal
 
 struct Embedding_solver::Impl
@@ -100,12 +56,31 @@ struct Embedding_solver::Impl
   using Sparse = internal::embedding::Sparse;
   using Cluster_data = internal::embedding::Cluster_data;
   using Weighted_edge = internal::embedding::Weighted_edge;
-  using Vertex_block_solver = internal::embedding::Vertex_block_solver;
+
+  // The global step: for the current rotations, the coordinates and
+  // positions of least energy, by one of the methods of `Global_step`
+  // (embedding_solver_global_steps.cpp).
+  struct Global_step_method
+  {
+    virtual ~Global_step_method() = default;
+    // Moves `d` there and returns the energy; `t` receives each phase's time.
+    virtual double step(Impl& d, Iteration_timings& t) const = 0;
+    // Whether it needs the Schur blocks, built with the factorization.
+    virtual bool uses_blocks() const { return true; }
+    // Whether the positions stay implicit, the rotations and coordinates being the state.
+    virtual bool implicit_positions() const { return false; }
+  };
+  struct Direct_step;
+  struct Schur_step;
+  struct Reduced_step;
+  static std::unique_ptr<Global_step_method> make_global_step(Global_step which);
 
   Embedding_options options;
+  std::unique_ptr<Global_step_method> global_step;
   Indexed_mesh mesh;
   int n = 0;
   std::vector<Cluster_data> clusters;
+  internal::embedding::Rotation_groups rotation_groups;
   int total_modes = 0;
   Sparse elastic;                 // sum of cluster Laplacians, n x n
   double mean_diagonal = 1.;
@@ -114,37 +89,16 @@ struct Embedding_solver::Impl
   // Handles.
   std::vector<int> handle_vertices;
   Point_matrix handle_targets;
+  // The factored vertex block. Not `factored` for the handles after a change
+  // of handle set it cannot take as a low-rank update; it still gives the
+  // implicit positions of the current state until refactored.
+  std::unique_ptr<internal::embedding::Vertex_block> block;
   bool factored = false;
-  // A change of handle vertices (and of the anchors it moves: a piece that
-  // gains or loses its handles) changes a few diagonal entries of the
-  // vertex block, a low-rank (Woodbury) update of the factored block:
-  // A = A_f + U diag(w) U^T with U the changed vertices,
-  // A^-1 = A_f^-1 - C K^-1 C^T, C = A_f^-1 U, K = diag(1/w) + U^T C.
-  Eigen::VectorXd factored_diagonal; // anchors and handle weights in A_f
-  std::vector<int> update_vertices;
-  Eigen::VectorXd update_weights;
-  Eigen::MatrixXd update_columns;      // C, n x k
-  Eigen::MatrixXd capacitance_inverse; // K^-1
-  std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base; // blocks of A_f
   bool handle_terms_ready = false;
   Eigen::VectorXd anchor;         // per-vertex anchor weight
-  Sparse system;                  // A11
-  std::unique_ptr<Vertex_block_solver> solver;
-
-  // Schur blocks, 3x3 each: H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d,
-  // Gz[ck] = (L_c B_ck)^T Z, with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
-  std::vector<Eigen::Matrix3d> h_blocks, g_blocks, z_blocks;
+  internal::embedding::Schur_blocks schur; // with the schur and reduced steps
   Eigen::MatrixXd coupling;       // coupled-coordinates term, total_modes x total_modes
-  Eigen::MatrixXd mode_gram;      // <B_ck, L_c B_cl>, block diagonal
-  Eigen::VectorXd mean_energy;    // <M_c, L_c M_c> per cluster
-  // For the reduced step, with X_c = L_c (M_c + sum_k lambda_ck B_ck):
-  // plm[d][c] = P_d^T L_c M_c, qlm[dl][c] = Q_dl^T L_c M_c, zlm[c] = Z^T L_c M_c,
-  // so that W[c][d] = X_c^T A11^-1 X_d is a short sum of blocks.
-  std::vector<Eigen::Matrix3d> plm_blocks, qlm_blocks, zlm_blocks;
   double handle_constant = 0.;    // sum w_h |y_h|^2 + anchors
-  double b0_z = 0.;               // <b0, Z>
-  Eigen::MatrixXd s0;             // constant part of the Schur complement
-  Eigen::VectorXd r0;             // constant part of its right-hand side
   Point_matrix b0;                // handle and anchor right-hand side
   // A11^-1 of each handle's unit right-hand side and of the anchors' part of
   // b0, for the handle set `handle_columns_for` (handle_solution()).
@@ -165,8 +119,7 @@ struct Embedding_solver::Impl
   std::vector<Eigen::Matrix3d> w_blocks;
   Point_matrix positions;
   Eigen::VectorXd coordinates;
-  std::vector<Eigen::Matrix3d> rotations;
-  std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations; // per cluster point, with Rotations::per_vertex
+  std::vector<Eigen::Matrix3d> rotations; // per rotation group: cluster c's at c with one per cluster
   int iterations_since_reset = 0;
   Iteration_timings timings; // of the last iterate()
 
@@ -177,17 +130,11 @@ struct Embedding_solver::Impl
   Eigen::VectorXd diagonal_terms(const std::vector<int>& handles) const;
   void factor();
   bool update_handle_set(const std::vector<int>& vertices);
-  void apply_update();
-  Eigen::MatrixXd solve_a11(const Eigen::MatrixXd& rhs) const;
-  Eigen::MatrixXd updated_product(const Eigen::MatrixXd& x) const;
   Point_matrix anchor_right_hand_side() const;
   Eigen::MatrixXd handle_solution();
   void prepare_handle_terms();
-  Eigen::MatrixXd scatter(const Cluster_data& c, const Point_matrix& local) const;
-  Eigen::MatrixXd gather(const Cluster_data& c, const Eigen::MatrixXd& global) const;
   Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
   void local_step();
-  Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e) const;
   Eigen::Matrix3d fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const;
   void start_at_rigid_fit_of_handles();
   Eigen::VectorXd packed_state() const;
@@ -209,7 +156,7 @@ struct Embedding_solver::Impl
   std::vector<Eigen::Matrix3d> w_of(const Eigen::VectorXd& lambda) const;
   double reduced_energy(const Eigen::VectorXd& lambda, const std::vector<Eigen::Matrix3d>& w) const;
   const Point_matrix& materialized_positions();
-  void global_step_direct(Point_matrix& v, Eigen::VectorXd& lambda);
+  double take_explicit(Point_matrix v, Eigen::VectorXd lambda, Iteration_timings& t);
   double energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only = -1) const;
   void check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
   [[noreturn]] void fail_on_non_finite_energy(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
@@ -221,13 +168,12 @@ struct Embedding_solver::Impl
     Point_matrix positions;
     Eigen::VectorXd coordinates;
     std::vector<Eigen::Matrix3d> rotations, w_blocks;
-    std::vector<std::vector<Eigen::Matrix3d>> vertex_rotations;
     bool implicit = false, positions_valid = true;
     int iterations_since_reset = 0;
   };
   State save() const
   {
-    return {positions, coordinates, rotations, w_blocks, vertex_rotations, implicit, positions_valid, iterations_since_reset};
+    return {positions, coordinates, rotations, w_blocks, implicit, positions_valid, iterations_since_reset};
   }
   void restore(State s)
   {
@@ -235,7 +181,6 @@ struct Embedding_solver::Impl
     coordinates = std::move(s.coordinates);
     rotations = std::move(s.rotations);
     w_blocks = std::move(s.w_blocks);
-    vertex_rotations = std::move(s.vertex_rotations);
     implicit = s.implicit;
     positions_valid = s.positions_valid;
     iterations_since_reset = s.iterations_since_reset;

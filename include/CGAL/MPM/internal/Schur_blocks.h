@@ -1,0 +1,58 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_INTERNAL_SCHUR_BLOCKS_H
+#define CGAL_MPM_INTERNAL_SCHUR_BLOCKS_H
+
+#include <CGAL/MPM/internal/Embedding_cluster.h>
+#include <CGAL/MPM/internal/Vertex_block.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+namespace embedding {
+
+/// What the Schur and reduced global steps know of the vertex block `A11`:
+/// 3x3 blocks of `A11^-1` between the clusters' operands, so that an
+/// iteration never touches the vertices. Built for the factored block,
+/// corrected for its low-rank update, and completed by the handle terms.
+struct Schur_blocks
+{
+  /// Builds the blocks of the factored block of `block` (its update ignored).
+  void build(const std::vector<Cluster_data>& clusters, const std::vector<int>& cluster_of_mode,
+             const Eigen::MatrixXd& coupling, const Vertex_block& block);
+  /// The blocks of `block` with its current update.
+  void update(const std::vector<Cluster_data>& clusters, const Vertex_block& block);
+  /// The handle terms, from the right-hand side `b0` and `z = A11^-1 b0`.
+  void set_handle_terms(const std::vector<Cluster_data>& clusters, const Point_matrix& b0, const Eigen::MatrixXd& z);
+
+  // H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d, Gz[ck] = (L_c B_ck)^T Z,
+  // with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
+  std::vector<Eigen::Matrix3d> h_blocks, g_blocks, z_blocks;
+  Eigen::MatrixXd mode_gram;   // <B_ck, L_c B_cl>, block diagonal
+  Eigen::VectorXd mean_energy; // <M_c, L_c M_c> per cluster
+  // For the reduced step, with X_c = L_c (M_c + sum_k lambda_ck B_ck):
+  // plm[d][c] = P_d^T L_c M_c, qlm[dl][c] = Q_dl^T L_c M_c, zlm[c] = Z^T L_c M_c,
+  // so that W[c][d] = X_c^T A11^-1 X_d is a short sum of blocks.
+  std::vector<Eigen::Matrix3d> plm_blocks, qlm_blocks, zlm_blocks;
+  double b0_z = 0.;   // <b0, Z>
+  Eigen::MatrixXd s0; // constant part of the Schur complement
+  Eigen::VectorXd r0; // constant part of its right-hand side
+
+private:
+  void build_inverse_blocks(const std::vector<Cluster_data>& clusters, const std::vector<int>& cluster_of_mode,
+                            const Vertex_block& block);
+
+  // The blocks of the factored block, which an update corrects.
+  std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base;
+};
+
+} // namespace embedding
+} // namespace internal
+} // namespace MPM
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,146 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/MPM/internal/Schur_blocks.h>
+
+#include <algorithm>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+namespace embedding {
+
+void Schur_blocks::build(const std::vector<Cluster_data>& clusters, const std::vector<int>& cluster_of_mode,
+                         const Eigen::MatrixXd& coupling, const Vertex_block& block)
+{
+  const int dm = static_cast<int>(cluster_of_mode.size()), nc = static_cast<int>(clusters.size());
+  mode_gram = Eigen::MatrixXd::Zero(dm, dm);
+  mean_energy.resize(nc);
+  r0 = Eigen::VectorXd::Zero(dm);
+  for(const Cluster_data& c : clusters)
+  {
+    mean_energy[&c - clusters.data()] = (c.mean.array() * c.laplacian_mean.array()).sum();
+    for(int k = 0; k < c.number_of_modes(); ++k)
+    {
+      for(int l = 0; l < c.number_of_modes(); ++l)
+        mode_gram(c.offset + k, c.offset + l) = (c.modes[k].array() * c.laplacian_modes[l].array()).sum();
+      r0[c.offset + k] = -(c.modes[k].array() * c.laplacian_mean.array()).sum();
+    }
+  }
+  s0 = mode_gram + coupling;
+  for(const Cluster_data& c : clusters)
+    for(int k = 0; k < c.number_of_modes(); ++k) s0(c.offset + k, c.offset + k) += c.prior[k];
+  build_inverse_blocks(clusters, cluster_of_mode, block);
+}
+
+// H, G, Q and P of A_f, from A_f^-1 of every operand L_c B_ck and L_c M_c.
+void Schur_blocks::build_inverse_blocks(const std::vector<Cluster_data>& clusters, const std::vector<int>& cluster_of_mode,
+                                        const Vertex_block& block)
+{
+  const int dm = static_cast<int>(cluster_of_mode.size()), nc = static_cast<int>(clusters.size());
+  const int n = static_cast<int>(block.factored_matrix().rows());
+  h_blocks.assign(std::size_t(dm) * dm, Eigen::Matrix3d::Zero());
+  g_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
+  qlm_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
+  plm_blocks.assign(std::size_t(nc) * nc, Eigen::Matrix3d::Zero());
+  // Right-hand sides are solved in batches to bound memory on large models.
+  const int columns = dm + nc;
+  const int batch = 16;
+  for(int first = 0; first < columns; first += batch)
+  {
+    const int count = std::min(batch, columns - first);
+    Eigen::MatrixXd rhs(n, 3 * count);
+    for(int j = 0; j < count; ++j)
+    {
+      const int column = first + j;
+      if(column < dm)
+      {
+        const Cluster_data& d = clusters[cluster_of_mode[column]];
+        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset], n);
+      }
+      else
+        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean, n);
+    }
+    const Eigen::MatrixXd solved = block.solve_factored(rhs); // the update is applied below
+    for(const Cluster_data& c : clusters)
+    {
+      const int ci = static_cast<int>(&c - clusters.data());
+      const Eigen::MatrixXd local = gather(c, solved);
+      for(int j = 0; j < count; ++j)
+      {
+        const int column = first + j;
+        const Eigen::Matrix3d with_mean = local.middleCols<3>(3 * j).transpose() * c.laplacian_mean;
+        if(column < dm) qlm_blocks[std::size_t(column) * nc + ci] = with_mean;
+        else plm_blocks[std::size_t(column - dm) * nc + ci] = with_mean;
+        for(int k = 0; k < c.number_of_modes(); ++k)
+        {
+          const Eigen::Matrix3d mode_block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
+          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = mode_block;
+          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = mode_block;
+        }
+      }
+    }
+  }
+  h_base = h_blocks;
+  g_base = g_blocks;
+  plm_base = plm_blocks;
+  qlm_base = qlm_blocks;
+}
+
+void Schur_blocks::update(const std::vector<Cluster_data>& clusters, const Vertex_block& block)
+{
+  if(block.update_vertices().empty())
+  {
+    h_blocks = h_base;
+    g_blocks = g_base;
+    plm_blocks = plm_base;
+    qlm_blocks = qlm_base;
+    return;
+  }
+  // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
+  // X^T A^-1 Y = X^T A_f^-1 Y - T_X^T K^-1 T_Y.
+  const int dm = static_cast<int>(mode_gram.rows()), nc = static_cast<int>(clusters.size());
+  std::vector<Eigen::MatrixXd> t_mean(nc), t_mode(dm);
+  for(int c = 0; c < nc; ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    const Eigen::MatrixXd local = gather(d, block.update_columns());
+    t_mean[c] = local.transpose() * d.laplacian_mean;
+    for(int m = 0; m < d.number_of_modes(); ++m) t_mode[d.offset + m] = local.transpose() * d.laplacian_modes[m];
+  }
+  const auto correction = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) -> Eigen::Matrix3d {
+    return x.transpose() * (block.capacitance_inverse() * y);
+  };
+  for(int a = 0; a < dm; ++a)
+  {
+    for(int b = 0; b < dm; ++b)
+      h_blocks[std::size_t(a) * dm + b] = h_base[std::size_t(a) * dm + b] - correction(t_mode[a], t_mode[b]);
+    for(int d = 0; d < nc; ++d)
+    {
+      g_blocks[std::size_t(a) * nc + d] = g_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
+      qlm_blocks[std::size_t(a) * nc + d] = qlm_base[std::size_t(a) * nc + d] - correction(t_mode[a], t_mean[d]);
+    }
+  }
+  for(int d = 0; d < nc; ++d)
+    for(int c = 0; c < nc; ++c)
+      plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
+}
+
+void Schur_blocks::set_handle_terms(const std::vector<Cluster_data>& clusters, const Point_matrix& b0,
+                                    const Eigen::MatrixXd& z)
+{
+  b0_z = (b0.array() * z.array()).sum();
+  z_blocks.assign(std::size_t(mode_gram.rows()), Eigen::Matrix3d::Zero());
+  zlm_blocks.assign(clusters.size(), Eigen::Matrix3d::Zero());
+  for(const Cluster_data& c : clusters)
+  {
+    const Eigen::MatrixXd local = gather(c, z);
+    zlm_blocks[&c - clusters.data()] = local.transpose() * c.laplacian_mean;
+    for(int k = 0; k < c.number_of_modes(); ++k)
+      z_blocks[c.offset + k] = c.laplacian_modes[k].transpose() * local;
+  }
+}
+
+} // namespace embedding
+} // namespace internal
+} // namespace MPM
+} // namespace CGAL
