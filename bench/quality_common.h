@@ -7,7 +7,9 @@
 
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -64,6 +66,16 @@ public:
     std::vector<CGAL::MPM::Synthetic_family> r;
     for(const std::string& name : list("families")) r.push_back(CGAL::MPM::parse_family(name));
     return r;
+  }
+  /// The meshes named by `--meshes`, else every NAME.off in `--data`, sorted.
+  std::vector<std::string> meshes() const
+  {
+    std::vector<std::string> names = list("meshes");
+    if(names.empty())
+      for(const auto& entry : std::filesystem::directory_iterator(text("data")))
+        if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
   }
 
 private:

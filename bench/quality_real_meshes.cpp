@@ -29,13 +29,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iomanip>
 
 namespace {
 
 using namespace CGAL::MPM;
-namespace fs = std::filesystem;
 
 struct Edit_result
 {
@@ -169,16 +167,6 @@ struct Insertions
   std::string failure;
 };
 
-// Intersecting face pairs of which exactly one face is `node`'s.
-int crossings_of_node(const Assembly& a, int node)
-{
-  std::vector<std::pair<int, int>> pairs;
-  self_intersecting_faces(a.mesh, pairs);
-  return int(std::count_if(pairs.begin(), pairs.end(), [&](const std::pair<int, int>& p) {
-    return (a.face_nodes[std::size_t(p.first)] == node) != (a.face_nodes[std::size_t(p.second)] == node);
-  }));
-}
-
 Insertions insert_into_every_chain(Morphable_part_model model)
 {
   Insertions r;
@@ -232,11 +220,7 @@ int main(int argc, char** argv)
     "usage: quality_real_meshes [--data DIR] [--annotations DIR] [--meshes a,b,...]\n"
     "Learns every DIR/NAME.off with DIR/NAME.seg (part types proposed, or from ANNOTATIONS/NAME.json)\n"
     "and prints the soundness of the learned example and of symmetrize, caricature and a tip drag.\n");
-  std::vector<std::string> names = options.list("meshes");
-  if(names.empty())
-    for(const auto& entry : fs::directory_iterator(options.text("data")))
-      if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
+  const std::vector<std::string> names = options.meshes();
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | folded faces | new self-int. | Hausdorff % | "
                "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | inverted in part, solver's result | new inverted in part, written (rest folds unfolded) | new folds, written | new self-int. | "
                "worst length change (parts out of range) |\n"

@@ -14,13 +14,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iomanip>
 
 namespace {
 
 using namespace CGAL::MPM;
-namespace fs = std::filesystem;
 
 // The human cuts a user would click: the closed seam loops, and, where a
 // part's seam runs along several neighbours (a phalanx touching the next
@@ -85,11 +83,7 @@ int main(int argc, char** argv)
     "usage: quality_segmentation [--data DIR] [--meshes a,b,...] [--search-range R]\n"
     "For every DIR/NAME.off with DIR/NAME.seg, clicks one vertex per human cut, cuts with\n"
     "cut_at_vertices() and prints a Markdown table against the human segmentation.\n");
-  std::vector<std::string> names = options.list("meshes");
-  if(names.empty())
-    for(const auto& entry : fs::directory_iterator(options.text("data")))
-      if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
+  const std::vector<std::string> names = options.meshes();
   std::cout << "| mesh | cuts found / human | within 1% | mean distance, % diagonal | worst, % | Rand Index error | "
                "Cut Discrepancy | Hamming | Rm | Rf | GCE | LCE | seconds |\n"
                "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";

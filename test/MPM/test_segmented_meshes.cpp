@@ -180,16 +180,6 @@ TEST_P(Segmented_meshes, a_segment_inserted_into_a_chain_keeps_the_surface_close
 
 INSTANTIATE_TEST_SUITE_P(Psb, Segmented_meshes, ::testing::Values("hand_181", "octopus_137", "ant_81"));
 
-// Intersecting face pairs of an assembly of which one face is `node`'s.
-int crossings_of_node(const Assembly& a, int node)
-{
-  std::vector<std::pair<int, int>> pairs;
-  self_intersecting_faces(a.mesh, pairs);
-  int crossing = 0;
-  for(const auto& [f, g] : pairs) crossing += (a.face_nodes[std::size_t(f)] == node) != (a.face_nodes[std::size_t(g)] == node);
-  return crossing;
-}
-
 // hand_196's fourth and fifth fingers are curled against the palm: a middle
 // segment copied from its neighbour continued the curl, and the inserted
 // segment ran through the palm and the next finger (89 and 48 crossing

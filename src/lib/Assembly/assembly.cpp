@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
@@ -300,6 +301,15 @@ std::vector<Spawned_graph> spawn_part_graphs(const Morphable_part_model& model, 
     return a.assembly.energy_per_part() < b.assembly.energy_per_part();
   });
   return spawned;
+}
+
+int crossings_of_node(const Assembly& a, int node)
+{
+  std::vector<std::pair<int, int>> pairs;
+  self_intersecting_faces(a.mesh, pairs);
+  int crossing = 0;
+  for(const auto& [f, g] : pairs) crossing += (a.face_nodes[std::size_t(f)] == node) != (a.face_nodes[std::size_t(g)] == node);
+  return crossing;
 }
 
 } // namespace MPM

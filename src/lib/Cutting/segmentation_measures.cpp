@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Cutting/Segmentation_measures.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 
 #include <algorithm>
@@ -68,14 +69,8 @@ using Edge = std::pair<int, int>;
 // smaller first; of the first two faces on a non-manifold edge).
 std::map<Edge, std::pair<int, int>> cut_edges(const Indexed_mesh& mesh, const std::vector<int>& labels)
 {
-  std::map<Edge, std::vector<int>> faces_of_edge;
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k) {
-      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(int(f));
-    }
   std::map<Edge, std::pair<int, int>> cuts;
-  for(const auto& [edge, faces] : faces_of_edge) {
+  for(const auto& [edge, faces] : internal::faces_of_edges(mesh)) {
     const int first = labels[faces[0]];
     const auto other = std::find_if(faces.begin(), faces.end(), [&labels, first](int f) { return labels[f] != first; });
     if(other != faces.end())

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Training_parts.h>
@@ -293,15 +294,8 @@ void stitch_example(const Morphable_part_model& model, Training_example& example
 // The labels of the faces on edges of one face (open seams, holes).
 std::set<int> labels_at_open_edges(const Indexed_mesh& mesh, const std::vector<int>& face_labels)
 {
-  std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(int(f));
-    }
   std::set<int> labels;
-  for(const auto& [edge, faces] : faces_of_edge)
+  for(const auto& [edge, faces] : internal::faces_of_edges(mesh))
     if(faces.size() == 1) labels.insert(face_labels[std::size_t(faces.front())]);
   return labels;
 }

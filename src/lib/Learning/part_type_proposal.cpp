@@ -4,6 +4,7 @@
 // Part types proposed from a segmentation (segment graph, seam loops, size)
 // and the checks a real segmentation must pass before correspondence.
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Message_text.h>
 
 #include <CGAL/MPM/Correspondence/Dense_correspondence.h>
@@ -14,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <deque>
 #include <set>
@@ -28,24 +28,9 @@ using internal::quoted;
 
 namespace {
 
+using internal::faces_of_edges;
+
 std::string segment_name(int label) { return "segment " + std::to_string(label); }
-
-std::uint64_t edge_key(int a, int b)
-{
-  if(a > b) std::swap(a, b);
-  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
-
-// Faces around each undirected edge, the basis of adjacency, borders and the
-// manifold check.
-std::unordered_map<std::uint64_t, std::vector<int>> faces_of_edges(const Indexed_mesh& mesh)
-{
-  std::unordered_map<std::uint64_t, std::vector<int>> r;
-  r.reserve(std::size_t(mesh.number_of_faces()) * 2);
-  for(int f = 0; f < mesh.number_of_faces(); ++f)
-    for(int k = 0; k < 3; ++k) r[edge_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])].push_back(f);
-  return r;
-}
 
 std::map<int, std::vector<int>> faces_by_label(const Labeled_mesh& lm)
 {
@@ -339,7 +324,7 @@ void validate_segmentation(const Labeled_mesh& lm)
   for(const auto& [key, faces] : edges)
     if(faces.size() > 2)
     {
-      const int a = int(key >> 32), b = int(key & 0xffffffffu);
+      const auto [a, b] = key;
       std::string list;
       for(int f : faces) list += (list.empty() ? "" : ", ") + std::to_string(f);
       throw Input_error(lm.source, segments_of(faces) + ": edge (" + std::to_string(a) + ", " + std::to_string(b) + ")",

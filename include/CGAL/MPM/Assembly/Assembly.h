@@ -92,6 +92,13 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& graph,
                   const Assembly_options& options = Assembly_options());
 
 /// \ingroup PkgMPMRef
+/// How many intersecting face pairs of `a.mesh` have exactly one face in
+/// node `node`: where the node crosses the rest of the assembly (an
+/// inserted segment lying on its neighbour). Pairs within the node or
+/// within the rest do not count.
+int crossings_of_node(const Assembly& a, int node);
+
+/// \ingroup PkgMPMRef
 /// Options that make `assemble(model, part_graph_of_example(model, example))`
 /// reproduce training example `example`: each node's target is its
 /// instance's own rest shape and its initial placement is the instance's.
