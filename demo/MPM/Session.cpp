@@ -295,12 +295,7 @@ void Session::rebuild()
     // An assembly is edited through its parts' coordinates: the type means
     // (symmetrize) or coordinates scaled away from them (caricature).
     MPM::Part_graph graph = edit_graph_;
-    if(mode_ != Edit_mode::deform)
-    {
-      const double factor = mode_ == Edit_mode::symmetrize ? 0. : caricature_factor_;
-      for(MPM::Part_node& node : graph.nodes) node.coordinates *= factor;
-      for(MPM::Part_edge& edge : graph.edges) edge.coordinates *= factor;
-    }
+    if(mode_ != Edit_mode::deform) MPM::scale_coordinates(graph, mode_ == Edit_mode::symmetrize ? 0. : caricature_factor_);
     MPM::Assembly_options options;
     options.solver.coupling_weight = coupling_;
     MPM::Assembly assembly = MPM::assemble(model_, graph, options);

@@ -356,3 +356,27 @@ TEST(Part_graph_validation, rejects_a_cycle_whose_seams_do_not_meet)
     EXPECT_NE(std::string(e.what()).find("seams do not meet"), std::string::npos) << e.what();
   }
 }
+
+// Symmetrizing an assembly puts every instance at its type's mean; a
+// caricature doubles each instance's distance from it.
+TEST(Part_graph_editing, scaled_coordinates_move_instances_about_their_mean)
+{
+  const Part_graph example = part_graph_of_example(hand(), 0);
+  double largest = 0.;
+  for(const Part_node& node : example.nodes) largest = std::max(largest, node.coordinates.norm());
+  ASSERT_GT(largest, 0.) << "the hand's instances are not all at their type's mean";
+
+  Part_graph symmetric = example;
+  scale_coordinates(symmetric, 0.);
+  for(const Part_node& node : symmetric.nodes) EXPECT_EQ(node.coordinates.norm(), 0.);
+  for(const Part_edge& edge : symmetric.edges) EXPECT_EQ(edge.coordinates.norm(), 0.);
+
+  Part_graph caricature = example;
+  scale_coordinates(caricature, 2.);
+  for(std::size_t n = 0; n < example.nodes.size(); ++n)
+    EXPECT_LT((caricature.nodes[n].coordinates - 2. * example.nodes[n].coordinates).norm(), 1e-12);
+  for(std::size_t e = 0; e < example.edges.size(); ++e)
+    EXPECT_LT((caricature.edges[e].coordinates - 2. * example.edges[e].coordinates).norm(), 1e-12);
+  EXPECT_EQ(caricature.nodes.size(), example.nodes.size());
+  EXPECT_EQ(caricature.edges.size(), example.edges.size());
+}

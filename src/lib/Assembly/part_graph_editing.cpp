@@ -443,5 +443,11 @@ Part_graph random_part_graph(const Morphable_part_model& model, const Part_graph
   return graph;
 }
 
+void scale_coordinates(Part_graph& graph, double factor)
+{
+  for(Part_node& node : graph.nodes) node.coordinates *= factor;
+  for(Part_edge& edge : graph.edges) edge.coordinates *= factor;
+}
+
 } // namespace MPM
 } // namespace CGAL

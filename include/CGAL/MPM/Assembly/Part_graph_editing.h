@@ -148,6 +148,13 @@ int duplicate_branch(const Morphable_part_model& model, Part_graph& graph, int n
 int close_cycle(const Morphable_part_model& model, Part_graph& graph, int a, int b);
 
 /// \ingroup PkgMPMRef
+/// Scales the shape coordinates of every node and docking of `graph` about
+/// their type's or rule's mean by `factor`: 0 makes every instance its
+/// type's mean (the symmetrization of an assembly), a factor above 1 a
+/// caricature, a negative one an anti-shape. Assemble the result to see it.
+void scale_coordinates(Part_graph& graph, double factor);
+
+/// \ingroup PkgMPMRef
 /// Options of `random_part_graph()`.
 struct Random_edit_options
 {
