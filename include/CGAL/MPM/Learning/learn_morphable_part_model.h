@@ -110,6 +110,7 @@ Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const 
 /// `Polyhedron_3`, ...) with one part label per face read from
 /// `face_labels` (a readable property map, face descriptor to integer).
 /// Vertices and faces are numbered in `vertices(g)` and `faces(g)` order.
+/// Named parameters come last, as in CGAL.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}
@@ -120,8 +121,8 @@ Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const 
 template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
 Morphable_part_model learn_morphable_part_model(const FaceGraph& g, FaceLabelMap face_labels,
                                                 const Annotation& annotation,
-                                                const NamedParameters& np = parameters::default_values(),
-                                                const Learning_options& options = Learning_options())
+                                                const Learning_options& options = Learning_options(),
+                                                const NamedParameters& np = parameters::default_values())
 {
   Labeled_mesh mesh;
   mesh.mesh = to_indexed_mesh(g, np);
