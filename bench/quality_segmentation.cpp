@@ -9,6 +9,7 @@
 #include "quality_common.h"
 
 #include <CGAL/MPM/Cutting/Joint_cutting.h>
+#include <CGAL/MPM/Cutting/Joint_proposal.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/Cutting/Segmentation_measures.h>
 
@@ -74,16 +75,76 @@ void evaluate(const std::string& name, const std::string& base, double search_ra
   for(const Skipped_click& k : result.skipped) std::cerr << name << ": " << k.reason << "\n";
 }
 
+// Joints proposed with no click: how many human cuts a proposed cut lies
+// within 1% of the diagonal of, proposed cuts that match none, and the
+// benchmark's measures.
+void evaluate_proposal(const std::string& name, const std::string& base, double sensitivity, bool details)
+{
+  const Labeled_mesh human = read_labeled_mesh(base + ".off", base + ".seg");
+  const Indexed_mesh& m = human.mesh;
+  const std::vector<Segmentation_cut> cuts = joint_cuts(segmentation_cuts(m, human.face_labels));
+  Joint_proposal_options options;
+  options.sensitivity = sensitivity;
+  const auto start = std::chrono::steady_clock::now();
+  const Joint_proposal proposal = cut_at_proposed_joints(m, options, base + ".off");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double diagonal = (m.points.colwise().maxCoeff() - m.points.colwise().minCoeff()).norm();
+  std::vector<char> matched_cut(proposal.cutting.cuts.size(), 0);
+  int matched_human = 0;
+  for(const Segmentation_cut& h : cuts) {
+    bool matched = false;
+    for(std::size_t i = 0; i < proposal.cutting.cuts.size(); ++i)
+      if(cut_distance(m, proposal.cutting.cuts[i].path, h.vertices) / diagonal < 0.01) {
+        matched = true;
+        matched_cut[i] = 1;
+      }
+    matched_human += matched;
+  }
+  const int extra = int(std::count(matched_cut.begin(), matched_cut.end(), 0));
+  if(details)
+    for(const Joint_cut& c : proposal.cutting.cuts) {
+      const auto j = std::find_if(proposal.joints.begin(), proposal.joints.end(),
+                                  [&](const Proposed_joint& p) { return p.vertex == c.vertex; });
+      double nearest = 1e9;
+      for(const Segmentation_cut& h : cuts) nearest = std::min(nearest, cut_distance(m, c.path, h.vertices) / diagonal);
+      std::cerr << name << ": cut at vertex " << c.vertex << ", limb " << j->limb << (j->at_base ? " (base)" : "")
+                << ", strength " << j->strength << ", nearest human cut " << 100. * nearest << "% of the diagonal\n";
+    }
+  const Segmentation_comparison s = compare_segmentations(m, proposal.cutting.mesh.face_labels, human.face_labels);
+  std::cout << "| " << name << " | " << proposal.limbs << " | " << proposal.cutting.cuts.size() << " | "
+            << matched_human << " / " << cuts.size() << " | " << extra << " | " << std::fixed << std::setprecision(3)
+            << s.rand_index_error << " | " << s.cut_discrepancy << " | " << s.hamming.average << " | "
+            << s.consistency.global << " | " << s.consistency.local << " | " << std::setprecision(1) << seconds
+            << " |\n"
+            << std::flush;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   const mpm_quality::Options options(
-    argc, argv, {{"data", "../shared/data/psb"}, {"meshes", ""}, {"search-range", "0.5"}},
-    "usage: quality_segmentation [--data DIR] [--meshes a,b,...] [--search-range R]\n"
+    argc, argv, {{"data", "../shared/data/psb"}, {"meshes", ""}, {"search-range", "0.5"}, {"auto", ""}, {"details", ""}},
+    "usage: quality_segmentation [--data DIR] [--meshes a,b,...] [--search-range R] [--auto SENSITIVITY [--details 1]]\n"
     "For every DIR/NAME.off with DIR/NAME.seg, clicks one vertex per human cut, cuts with\n"
-    "cut_at_vertices() and prints a Markdown table against the human segmentation.\n");
+    "cut_at_vertices() and prints a Markdown table against the human segmentation. With\n"
+    "--auto, cuts at the joints cut_at_proposed_joints() proposes instead (--details 1: each\n"
+    "proposed cut, its limb and strength and its distance to the nearest human cut, on stderr).\n");
   const std::vector<std::string> names = options.meshes();
+  if(!options.text("auto").empty()) {
+    std::cout << "| mesh | limbs | cuts | human cuts matched within 1% | cuts matching none | Rand Index error | "
+                 "Cut Discrepancy | Hamming | GCE | LCE | seconds |\n"
+                 "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    for(const std::string& name : names) {
+      try {
+        evaluate_proposal(name, options.text("data") + "/" + name, std::atof(options.text("auto").c_str()),
+                          !options.text("details").empty());
+      } catch(const std::exception& error) {
+        std::cout << "| " << name << " | failed: " << error.what() << " |\n" << std::flush;
+      }
+    }
+    return 0;
+  }
   std::cout << "| mesh | cuts found / human | within 1% | mean distance, % diagonal | worst, % | Rand Index error | "
                "Cut Discrepancy | Hamming | Rm | Rf | GCE | LCE | seconds |\n"
                "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";

@@ -4,11 +4,13 @@
 // `mpm learn MESH [--labels SEG] [--annotation JSON] [MESH2 ...] -o MODEL`:
 // learns a morphable part model from part-labelled meshes and saves it.
 // Meshes without an annotation whose segments are not in known
-// correspondence (real segmentations) get proposed part types first.
+// correspondence (real segmentations) get proposed part types first. With
+// --auto-cut, meshes without --labels are cut at proposed joints first.
 #include "cli.h"
 #include "standard_streams.h"
 #include "mesh_files.h"
 
+#include <CGAL/MPM/Cutting/Joint_proposal.h>
 #include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/IO/Model_io.h>
@@ -130,6 +132,24 @@ Json propose_and_report(std::vector<Mesh_files>& files, std::vector<CGAL::MPM::T
   return proposed;
 }
 
+// --auto-cut: the mesh cut at the joints cut_at_proposed_joints() proposes.
+CGAL::MPM::Labeled_mesh auto_cut(const Args& args, Context& context, const std::string& path)
+{
+  using namespace CGAL::MPM;
+  Joint_proposal_options options;
+  options.sensitivity = args.real("sensitivity", options.sensitivity);
+  context.progress.update("proposing joints of " + path, 0.1);
+  const Joint_proposal proposal = cut_at_proposed_joints(read_mesh_file(path).mesh, options, path);
+  if(!context.json) {
+    context.progress.done();
+    std::cout << "Cut " << path << " at " << proposal.cutting.cuts.size() << " proposed joints on " << proposal.limbs
+              << " limbs (sensitivity " << format_number(options.sensitivity) << ")\n\n";
+  }
+  Labeled_mesh r = proposal.cutting.mesh;
+  r.source = path;
+  return r;
+}
+
 int run_learn(const Args& args, Context& context)
 {
   using namespace CGAL::MPM;
@@ -151,7 +171,9 @@ int run_learn(const Args& args, Context& context)
     context.progress.update("reading " + f.mesh, double(i) / double(files.size()));
     Training_input input;
     std::vector<std::string> read_warnings;
-    input.mesh = read_labeled_mesh(f.mesh, f.labels, &read_warnings);
+    const bool cut_here = args.flag("auto-cut") && !f.labels_given;
+    input.mesh = cut_here ? auto_cut(args, context, f.mesh) : read_labeled_mesh(f.mesh, f.labels, &read_warnings);
+    if(cut_here) files[i].labels = "cut at proposed joints";
     input.mesh.source = as_the_user_wrote(input.mesh.source); // `-`, not its temporary copy
     for(const std::string& w : read_warnings) warn(w);
     validate_labeled_mesh(input.mesh);
@@ -220,7 +242,8 @@ Command make_learn_command()
   Command c;
   c.name = "learn";
   c.summary = "learn a morphable part model from part-labelled meshes";
-  c.synopsis = "MESH [--labels SEG] [--annotation JSON] [--write-annotation FILE] [MESH2 ...] -o MODEL [options]";
+  c.synopsis = "MESH [--labels SEG] [--annotation JSON] [--write-annotation FILE] [MESH2 ...] -o MODEL\n"
+               "       [--auto-cut [--sensitivity S]] [options]";
   c.operand = "MESH";
   c.description =
     "MESH is an OFF, OBJ, PLY or STL file. --labels and --annotation apply to the MESH\n"
@@ -233,14 +256,21 @@ Command make_learn_command()
     "two segments share connectivity (a real segmentation), part types are proposed\n"
     "from the segment graph (root: most neighbours; depth along each chain; seam\n"
     "loops) and segment areas, printed as a table and used for learning;\n"
-    "--write-annotation FILE saves them for editing. Parameters are taken from the\n"
-    "first mesh's annotation; the options below override them.";
+    "--write-annotation FILE saves them for editing. With --auto-cut, meshes given\n"
+    "no --labels are cut at joints proposed from their curve skeleton first (as\n"
+    "'mpm cut --auto'), so a raw closed mesh becomes a model in one command.\n"
+    "Parameters are taken from the first mesh's annotation; the options below\n"
+    "override them.";
   c.min_positionals = 1;
   c.max_positionals = -1;
   c.options = {
     {"output", 'o', Value_kind::output_file, "MODEL", "", "model file to write (required)"},
     {"write-annotation", 0, Value_kind::output_file, "FILE", "none",
      "write the part types proposed for the preceding MESH as an annotation", -HUGE_VAL, HUGE_VAL, false, true},
+    {"auto-cut", 0, Value_kind::flag, "", "off",
+     "cut meshes given no --labels at proposed joints (limbs from the curve skeleton)"},
+    {"sensitivity", 0, Value_kind::real, "S", "0.5",
+     "with --auto-cut: 0 cuts limbs off the body only, higher proposes more joints along them", 0, 1},
     {"modes", 0, Value_kind::integer, "N", "annotation's, else 0 = by explained variance",
      "modes kept per shape space", 0, INT_MAX},
     {"explained-variance", 0, Value_kind::real, "F", "annotation's, else 0.99",

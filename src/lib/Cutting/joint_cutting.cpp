@@ -3,330 +3,17 @@
 #include <CGAL/MPM/Cutting/Joint_cutting.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Cutting/Mesh_cutting.h>
-#include <CGAL/MPM/internal/Crease_weights.h>
-#include <CGAL/MPM/internal/Curve_skeleton.h>
-#include <CGAL/MPM/internal/Indexed_surface_mesh.h>
-#include <CGAL/MPM/internal/Vertex_components.h>
-
-#include <Eigen/Geometry>
+#include <CGAL/MPM/internal/Joint_finder.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <set>
 
 namespace CGAL {
 namespace MPM {
 
 namespace {
 
-using Mesh = internal::Indexed_surface_mesh;
-using Vector = Eigen::Vector3d;
-
 std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
-
-// The limb around a clicked vertex: a point on the skeleton, its direction
-// and the limb's radius there.
-struct Limb_axis
-{
-  Vector point = Vector::Zero(), direction = Vector::UnitZ();
-  double radius = 0.;
-};
-
-// A closed section of the mesh by a plane, as the vertices on the plane's
-// positive side of its crossing edges, in order (consecutive ones share an edge).
-struct Section
-{
-  std::vector<int> loop;
-  Vector centre = Vector::Zero();
-  double spread = 0.; // largest distance of a loop vertex from the axis point
-  double weighted = 0.; // crease-weighted length: lower for a narrow section along a concave crease
-  double off_axis = 0.; // distance of the centre from the axis point
-  Limb_axis axis;       // the limb it goes around
-  double shift = 0.;    // how far its plane was moved along the axis from the click
-};
-
-class Joint_finder
-{
-public:
-  Joint_finder(const Indexed_mesh& m, const Joint_cutting_options& options, const std::string& source)
-    : m_(m), options_(options), source_(source), surface_(internal::to_surface_mesh(m, source, "joint cutting"))
-  {
-    check_closed_and_connected();
-    skeleton_ = internal::curve_skeleton(m, source);
-    measure_skeleton_edges();
-    weight_ = internal::crease_edge_weights(surface_, m, 1.);
-  }
-
-  Section find(int v) const
-  {
-    const std::vector<Limb_axis> axes = limb_axes(v);
-    // The section through the click is where the user asked for the cut:
-    // across the limb under the click whose section there is the narrowest
-    // small loop around its axis (at a joint, the limb's, not the body's),
-    // tilted by up to 20 degrees to follow an oblique crease.
-    Section best;
-    std::size_t most_vertices = 0;
-    for(const Limb_axis& axis : axes)
-      for(const Vector& n : tilted(axis.direction, {10., 20.})) {
-        const Section s = section(v, axis, 0., n, true);
-        const std::size_t vertices = std::set<int>(s.loop.begin(), s.loop.end()).size();
-        most_vertices = std::max(most_vertices, vertices);
-        if(acceptable(s) && (best.loop.empty() || s.weighted < best.weighted)) best = s;
-      }
-    if(!best.loop.empty()) return best;
-    if(most_vertices < std::size_t(options_.minimum_section_vertices))
-      fail(v, "the mesh is too coarse there: the section across the limb has " + std::to_string(most_vertices) +
-                " vertices (at least " + std::to_string(options_.minimum_section_vertices) + " needed)");
-    // It runs into the body or a neighbouring limb: take the narrowest small
-    // section moved along the best-fitting limb or tilted, within the search range.
-    const Limb_axis& axis = axes.front();
-    const std::vector<Vector> normals = tilted(axis.direction, {20., 40.});
-    const int steps = 4;
-    for(int k = -steps; k <= steps && options_.search_range > 0; ++k)
-      for(const Vector& n : normals) {
-        const Section s = section(v, axis, options_.search_range * axis.radius * k / steps, n, false);
-        if(acceptable(s) && (best.loop.empty() || s.weighted < best.weighted)) best = s;
-      }
-    if(best.loop.empty())
-      fail(v, "the section across the limb there is not a small closed loop around the skeleton (the limb's radius "
-              "is " + std::to_string(axis.radius) + "), nor is any section within the search range: click on a "
-              "limb, near its joint");
-    return best;
-  }
-
-  // `direction` and directions tilted from it by each angle (degrees) towards
-  // eight directions around it.
-  static std::vector<Vector> tilted(const Vector& direction, const std::vector<double>& angles)
-  {
-    const Vector u = direction.unitOrthogonal(), w = direction.cross(u);
-    std::vector<Vector> r{direction};
-    for(double angle : angles)
-      for(int k = 0; k < 8; ++k) {
-        const Vector e = std::cos(k * M_PI / 4.) * u + std::sin(k * M_PI / 4.) * w;
-        r.push_back((direction + std::tan(angle * M_PI / 180.) * e).normalized());
-      }
-    return r;
-  }
-
-  // Two clicks on one joint give sections whose centres lie within a limb
-  // radius (sections of neighbouring limbs may share a vertex where they meet).
-  void check_distinct(int u, const Section& a, int v, const Section& b) const
-  {
-    const double apart = (a.centre - b.centre).norm();
-    if(apart < std::max(a.axis.radius, b.axis.radius))
-      fail(v, "is on the same joint as " + vertex_name(u) + " (the centres of their cuts lie " + std::to_string(apart) +
-                " apart, less than the limb's radius): click each joint once");
-  }
-
-  [[noreturn]] void fail(int v, const std::string& problem) const { throw Input_error(source_, vertex_name(v), problem); }
-
-private:
-  void check_closed_and_connected() const
-  {
-    for(auto h : surface_.halfedges())
-      if(surface_.is_border(h))
-        throw Input_error(source_, vertex_name(int(surface_.target(h))),
-                          "lies on a hole of the mesh: cutting at joints needs a closed surface (close the holes first)");
-    int components = 0;
-    internal::vertex_component_labels(m_, &components);
-    if(components > 1)
-      throw Input_error(source_, "mesh",
-                        "has " + std::to_string(components) +
-                          " connected components: cutting at joints needs one closed surface");
-  }
-
-  Vector point(int v) const { return m_.points.row(v).transpose(); }
-
-  // The limbs the vertex lies on: skeleton edges near its node at a
-  // distance from it within half their radius of that radius (a vertex at
-  // the base of a limb often contracts to a node of the body but lies on the
-  // limb's surface), best fitting first, each with its direction smoothed
-  // over about a limb radius along the branch.
-  std::vector<Limb_axis> limb_axes(int v) const
-  {
-    const int node = skeleton_.node_of_vertex[std::size_t(v)];
-    if(node < 0) fail(v, "no skeleton node stands for it");
-    const std::vector<char> near = nodes_within(node, 8);
-    const Vector p = point(v);
-    std::vector<std::pair<double, std::size_t>> fits;
-    double best = std::numeric_limits<double>::infinity();
-    for(std::size_t e = 0; e < skeleton_edges_.size(); ++e) {
-      const auto [a, b] = skeleton_edges_[e];
-      if(!near[std::size_t(a)] || !near[std::size_t(b)] || !(edge_radius_[e] > 0)) continue;
-      const double d = distance_to_segment(p, skeleton_.points[std::size_t(a)], skeleton_.points[std::size_t(b)]);
-      const double misfit = std::abs(d - edge_radius_[e]) / edge_radius_[e];
-      best = std::min(best, misfit);
-      if(misfit <= 0.5) fits.emplace_back(misfit, e);
-    }
-    if(fits.empty())
-      fail(v, "is on the body: no limb of the curve skeleton passes under it (its distance to each nearby axis "
-              "differs from that limb's radius by " + std::to_string(int(100. * best)) + "% or more)");
-    std::sort(fits.begin(), fits.end());
-    std::vector<Limb_axis> axes;
-    for(std::size_t k = 0; k < std::min<std::size_t>(fits.size(), 8); ++k) {
-      const auto [a, b] = skeleton_edges_[fits[k].second];
-      Limb_axis axis;
-      axis.radius = edge_radius_[fits[k].second];
-      axis.direction = (walk(b, a, axis.radius) - walk(a, b, axis.radius)).normalized();
-      const Vector pa = skeleton_.points[std::size_t(a)];
-      axis.point = pa + (p - pa).dot(axis.direction) * axis.direction;
-      if(axis.direction.allFinite()) axes.push_back(axis);
-    }
-    if(axes.empty()) fail(v, "the curve skeleton has no direction there");
-    return axes;
-  }
-
-  static double distance_to_segment(const Vector& p, const Vector& a, const Vector& b)
-  {
-    const double t = std::clamp((p - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0., 1.);
-    return (p - (a + t * (b - a))).norm();
-  }
-
-  // Per skeleton edge, the mean distance from its line of the mesh vertices
-  // that contracted to its two nodes: the limb's radius there.
-  void measure_skeleton_edges()
-  {
-    std::vector<std::vector<std::size_t>> edges_of_node(skeleton_.points.size());
-    for(std::size_t a = 0; a < skeleton_.neighbours.size(); ++a)
-      for(int b : skeleton_.neighbours[a])
-        if(int(a) < b) {
-          edges_of_node[a].push_back(skeleton_edges_.size());
-          edges_of_node[std::size_t(b)].push_back(skeleton_edges_.size());
-          skeleton_edges_.emplace_back(int(a), b);
-        }
-    std::vector<double> sum(skeleton_edges_.size(), 0.);
-    std::vector<int> count(skeleton_edges_.size(), 0);
-    for(std::size_t u = 0; u < skeleton_.node_of_vertex.size(); ++u) {
-      const int n = skeleton_.node_of_vertex[u];
-      if(n < 0) continue;
-      for(std::size_t e : edges_of_node[std::size_t(n)]) {
-        const Vector a = skeleton_.points[std::size_t(skeleton_edges_[e].first)];
-        const Vector d = (skeleton_.points[std::size_t(skeleton_edges_[e].second)] - a).normalized();
-        const Vector r = point(int(u)) - a;
-        sum[e] += (r - r.dot(d) * d).norm();
-        ++count[e];
-      }
-    }
-    for(std::size_t e = 0; e < sum.size(); ++e) edge_radius_.push_back(count[e] > 0 ? sum[e] / count[e] : 0.);
-  }
-
-  // Nodes at most `hops` skeleton edges from `node`.
-  std::vector<char> nodes_within(int node, int hops) const
-  {
-    std::vector<char> reached(skeleton_.points.size(), 0);
-    std::vector<int> front{node};
-    reached[std::size_t(node)] = 1;
-    for(int h = 0; h < hops; ++h) {
-      std::vector<int> next;
-      for(int n : front)
-        for(int m : skeleton_.neighbours[std::size_t(n)])
-          if(!reached[std::size_t(m)]) {
-            reached[std::size_t(m)] = 1;
-            next.push_back(m);
-          }
-      front = std::move(next);
-    }
-    return reached;
-  }
-
-  // Position reached walking from `from` away from `previous` along a chain
-  // of the skeleton for `length`, stopping at a branch or an end.
-  Vector walk(int from, int previous, double length) const
-  {
-    double walked = 0.;
-    while(walked < length && skeleton_.neighbours[std::size_t(from)].size() == 2) {
-      const auto& nb = skeleton_.neighbours[std::size_t(from)];
-      const int next = nb[0] == previous ? nb[1] : nb[0];
-      walked += (skeleton_.points[std::size_t(next)] - skeleton_.points[std::size_t(from)]).norm();
-      previous = from;
-      from = next;
-    }
-    return skeleton_.points[std::size_t(from)];
-  }
-
-  // A small closed loop around its limb's axis, with enough vertices.
-  bool acceptable(const Section& s) const
-  {
-    return std::set<int>(s.loop.begin(), s.loop.end()).size() >= std::size_t(options_.minimum_section_vertices) &&
-           s.spread <= 3. * s.axis.radius && s.off_axis <= s.axis.radius;
-  }
-
-  // The closed section by the plane through the clicked vertex moved by `t`
-  // along the axis, with the given normal: the loop through the vertex when
-  // `through_click` and there is one, else the loop centred nearest the axis.
-  Section section(int v, const Limb_axis& axis, double t, const Vector& normal, bool through_click) const
-  {
-    const Vector origin = point(v) + t * axis.direction, centre = axis.point + t * axis.direction;
-    std::vector<char> positive(std::size_t(m_.number_of_vertices()));
-    for(int u = 0; u < m_.number_of_vertices(); ++u)
-      positive[std::size_t(u)] = normal.dot(point(u) - origin) >= 0;
-    auto crossing = [&](Mesh::Halfedge_index h) {
-      return positive[std::size_t(surface_.source(h))] != positive[std::size_t(surface_.target(h))];
-    };
-    std::vector<char> visited(surface_.number_of_edges(), 0);
-    Section best;
-    double best_rank = std::numeric_limits<double>::infinity();
-    for(auto e : surface_.edges()) {
-      if(visited[e] || !crossing(surface_.halfedge(e))) continue;
-      Section s = trace(surface_.halfedge(e), crossing, positive, visited);
-      s.spread = 0.;
-      for(int u : s.loop) s.spread = std::max(s.spread, (point(u) - centre).norm());
-      s.off_axis = (s.centre - centre).norm();
-      const bool has_click = through_click && std::find(s.loop.begin(), s.loop.end(), v) != s.loop.end();
-      const double rank = has_click ? -1. : s.off_axis;
-      if(rank < best_rank) {
-        best_rank = rank;
-        best = std::move(s);
-      }
-    }
-    best.shift = t;
-    best.axis = axis;
-    return best;
-  }
-
-  // Follows the crossing edges from `start` face by face around the section.
-  template <class Crossing>
-  Section trace(Mesh::Halfedge_index start, const Crossing& crossing, const std::vector<char>& positive,
-                std::vector<char>& visited) const
-  {
-    Section s;
-    double weighted = 0.;
-    Mesh::Halfedge_index h = start;
-    do {
-      visited[surface_.edge(h)] = 1;
-      const int u = int(positive[std::size_t(surface_.source(h))] ? surface_.source(h) : surface_.target(h));
-      if(s.loop.empty() || s.loop.back() != u) {
-        if(!s.loop.empty()) weighted += edge_weight(s.loop.back(), u);
-        s.loop.push_back(u);
-      }
-      // The face on h's side has exactly one other crossing edge.
-      const Mesh::Halfedge_index n = surface_.next(h);
-      h = surface_.opposite(crossing(n) ? n : surface_.prev(h));
-    } while(h != start);
-    if(s.loop.size() > 1 && s.loop.front() == s.loop.back()) s.loop.pop_back();
-    if(s.loop.size() > 1) weighted += edge_weight(s.loop.back(), s.loop.front());
-    for(int u : s.loop) s.centre += point(u);
-    s.centre /= double(std::max<std::size_t>(s.loop.size(), 1));
-    s.weighted = weighted;
-    return s;
-  }
-
-  double edge_weight(int a, int b) const
-  {
-    const auto h = surface_.halfedge(Mesh::Vertex_index(a), Mesh::Vertex_index(b));
-    return h == Mesh::null_halfedge() ? 0. : weight_[surface_.edge(h)];
-  }
-
-  const Indexed_mesh& m_;
-  const Joint_cutting_options& options_;
-  std::string source_;
-  Mesh surface_;
-  internal::Curve_skeleton skeleton_;
-  std::vector<std::pair<int, int>> skeleton_edges_; // node pairs, smaller first
-  std::vector<double> edge_radius_;                 // limb radius around each skeleton edge
-  std::vector<double> weight_; // crease weights at feature weight 1, for ranking sections
-};
 
 void check_options(const Joint_cutting_options& o)
 {
@@ -360,7 +47,6 @@ std::vector<int> anchors(const Indexed_mesh& m, const std::vector<int>& loop, in
 Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices,
                                      const Joint_cutting_options& options, const std::string& mesh_source)
 {
-  check_options(options);
   std::vector<bool> in_face(std::size_t(mesh.number_of_vertices()), false);
   for(const Triangle& t : mesh.triangles)
     for(int v : t)
@@ -371,8 +57,17 @@ Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector
                         "is out of range (the mesh has " + std::to_string(mesh.number_of_vertices()) + " vertices)");
     if(!in_face[std::size_t(v)]) throw Input_error(mesh_source, vertex_name(v), "belongs to no face");
   }
-  const Joint_finder finder(mesh, options, mesh_source);
+  return internal::cut_at_vertices(internal::Joint_finder(mesh, options, mesh_source), vertices, options);
+}
 
+namespace internal {
+
+Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vector<int>& vertices,
+                                     const Joint_cutting_options& options)
+{
+  check_options(options);
+  const Indexed_mesh& mesh = finder.mesh();
+  const std::string& mesh_source = finder.source();
   Joint_cutting_result result;
   std::vector<int> found;
   std::vector<Section> sections;
@@ -418,6 +113,8 @@ Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector
   }
   return result;
 }
+
+} // namespace internal
 
 } // namespace MPM
 } // namespace CGAL
