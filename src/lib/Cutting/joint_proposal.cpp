@@ -276,6 +276,13 @@ struct Joint_thresholds
     narrowing = 0.4 * f;
     bend = 35. * M_PI / 180. * f;
   }
+  Joint_thresholds times(double k) const
+  {
+    Joint_thresholds r = *this;
+    r.narrowing *= k;
+    r.bend *= k;
+    return r;
+  }
 };
 
 // Joints along a chain: stations whose score (narrowing over its threshold
@@ -373,7 +380,8 @@ Joint_proposal cut_at_proposed_joints(const Indexed_mesh& mesh, const Joint_prop
   if(body.size() > 1) {
     const double radius = branches.radius(body), spacing = options.minimum_segment_length * radius;
     const std::vector<Station> stations = branches.stations(body, radius, 0.5 * spacing);
-    for(const auto& [strength, i] : joints_along(stations, spacing, thresholds, {}, branches.length(body)))
+    // Only a waist: a body's axis bends and swells where limbs leave it.
+    for(const auto& [strength, i] : joints_along(stations, spacing, thresholds.times(4.), {}, branches.length(body)))
       proposal.joints.push_back({stations[std::size_t(i)].vertex, -1, false, strength});
   }
   std::vector<int> vertices;
