@@ -25,6 +25,7 @@ namespace mpm_python {
 namespace py = pybind11;
 
 void bind_meshes(py::module_& m);
+void bind_cutting(py::module_& m);
 void bind_model(py::module_& m);
 void bind_editing(py::module_& m);
 void bind_assembly(py::module_& m);

@@ -94,6 +94,7 @@ See doc/MPM/Python.md.)doc";
   });
 
   mpm_python::bind_meshes(m);
+  mpm_python::bind_cutting(m);
   mpm_python::bind_model(m);
   mpm_python::bind_editing(m);
   mpm_python::bind_assembly(m);

@@ -95,3 +95,20 @@ def test_a_real_segmented_hand(psb_dir):
     check = mpm.check_surface(V2, rest["F"])
     assert check["components"] == 1 and check["border_edges"] == 0
     assert np.linalg.norm(V2[vertices[-1]] - targets[-1]) < 0.01 * diagonal(rest["V"])
+
+
+def test_cut_at_joints_from_a_raw_scan(psb_dir):
+    # No labels given: the proposed joints cut the octopus's eight arms off its
+    # body, and a click at one proposal gives the same cut back.
+    V, F, _ = mpm.read_labeled_mesh(os.path.join(psb_dir, "octopus_126.off"), "components")
+    proposal = mpm.cut_at_proposed_joints(V, F)
+    assert proposal["limbs"] == 8
+    bases = [j for j in proposal["joints"] if j["at_base"]]
+    assert len(bases) == 8
+    assert len(np.unique(proposal["labels"])) == len(proposal["cuts"]) + 1
+    first = proposal["cuts"][0]
+    again = mpm.cut_at_vertices(V, F, [first["vertex"]])
+    assert len(again["cuts"]) == 1 and again["cuts"][0]["vertex"] == first["vertex"]
+    assert abs(again["cuts"][0]["length"] - first["length"]) < 0.05 * first["length"]
+    with pytest.raises(ValueError, match="sensitivity"):
+        mpm.cut_at_proposed_joints(V, F, sensitivity=2.0)
