@@ -154,6 +154,127 @@ private:
   Point_matrix& placed_u_; // the part whose dockings are examined, placed
 };
 
+// The graph is valid and the options fit it: one target and one placement
+// per node when given, a root among the nodes.
+void check_assembly_input(const Morphable_part_model& model, const Part_graph& input, const Assembly_options& options)
+{
+  validate_part_graph(model, input);
+  const int n = static_cast<int>(input.nodes.size());
+  if(!options.targets.empty() && int(options.targets.size()) != n)
+    throw Input_error("assembly options", "targets", "give one target per node (" + std::to_string(n) + ")");
+  if(!options.placements.empty() && int(options.placements.size()) != n)
+    throw Input_error("assembly options", "placements", "give one placement per node (" + std::to_string(n) + ")");
+  if(options.root >= n) throw Input_error("assembly options", "root", "node " + std::to_string(options.root) + " does not exist");
+}
+
+// Each node's target shape in the frame of its type's space: the type's
+// shape at the node's coordinates, or the given target moved into that
+// frame by `given_frame` (identity for the former).
+std::vector<Point_matrix> target_shapes(const Morphable_part_model& model, const Part_graph& graph,
+                                        const Assembly_options& options, std::vector<Rigid_motion>& given_frame)
+{
+  const int n = static_cast<int>(graph.nodes.size());
+  std::vector<Point_matrix> targets(n);
+  given_frame.assign(n, Rigid_motion());
+  for(int i = 0; i < n; ++i)
+  {
+    const Part_type& type = model.types[graph.nodes[i].type];
+    if(options.targets.empty())
+      targets[i] = type.space.shape(graph.nodes[i].coordinates);
+    else
+    {
+      const Point_matrix& t = options.targets[i];
+      if(t.rows() != type.number_of_vertices || !t.allFinite())
+        throw Input_error("assembly options", "target of node " + std::to_string(i),
+                          "needs " + std::to_string(type.number_of_vertices) + " finite points");
+      given_frame[i] = fit_rigid_motion(t, type.space.mean);
+      targets[i] = given_frame[i].apply(t);
+    }
+  }
+  return targets;
+}
+
+// Each node's rigid placement: given, or breadth-first from the root along
+// the dockings.
+std::vector<Rigid_motion> place_parts(const Morphable_part_model& model, const Part_graph& graph,
+                                      const std::vector<Point_matrix>& targets,
+                                      const std::vector<Rigid_motion>& given_frame, const Assembly_options& options)
+{
+  const int n = static_cast<int>(graph.nodes.size());
+  std::vector<Rigid_motion> motion(n);
+  if(!options.placements.empty())
+    for(int i = 0; i < n; ++i) motion[i] = compose(options.placements[i], given_frame[i].inverse());
+  else
+  {
+    Point_matrix placed_u;
+    boost::breadth_first_search(adjacency_graph(graph), std::size_t(options.root >= 0 ? options.root : 0),
+                                boost::visitor(Placement_visitor(model, graph, targets, motion, placed_u)));
+  }
+  return motion;
+}
+
+// Stitching: one vertex per class of identified (node, local) pairs.
+// Differently sampled seams (merged seams) first insert their vertices
+// into the parts that lack them: node i's inserted vertices follow its
+// type's locals, each splitting a border edge of the part. Fills the
+// nodes' motions and vertices, each face's node and type and the merged
+// seams' vertices of `result`; returns the stitched mesh at the placement.
+Indexed_mesh stitch_parts(const Morphable_part_model& model, const internal::Graph_refinement& refined,
+                          const std::vector<Point_matrix>& targets, const std::vector<Rigid_motion>& motion,
+                          Assembly& result)
+{
+  Part_graph& graph = result.graph;
+  const int n = static_cast<int>(graph.nodes.size());
+  std::vector<Point_matrix> placed_points(n);
+  for(int i = 0; i < n; ++i)
+  {
+    const Point_matrix placed_target = motion[i].apply(targets[i]);
+    const std::vector<internal::Inserted_vertex>& inserted = refined.nodes[i].inserted;
+    placed_points[i] = inserted.empty() ? placed_target : internal::refine_points(placed_target, inserted);
+    graph.nodes[i].motion = motion[i];
+    graph.nodes[i].label = -1;
+  }
+  Indexed_mesh mesh = internal::stitch_part_graph(model, graph, refined, placed_points, &result.face_nodes);
+  for(int node : result.face_nodes) result.face_types.push_back(graph.nodes[node].type);
+  result.seam_vertices.assign(graph.edges.size(), {});
+  for(std::size_t k = 0; k < graph.edges.size(); ++k)
+    for(const std::array<int, 2>& l : refined.merged_locals[k])
+      result.seam_vertices[k].push_back(graph.nodes[graph.edges[k].first].vertices[l[0]]);
+  return mesh;
+}
+
+// Each edge's motion: from its rule's mean pair geometry to where the
+// stitched placement `initial` puts the pair's points.
+void fit_edge_motions(const Morphable_part_model& model, const Point_matrix& initial, Part_graph& graph)
+{
+  for(Part_edge& e : graph.edges)
+  {
+    const Docking_rule& rule = model.rules[e.rule];
+    Point_matrix rest(rule.points.size(), 3);
+    for(std::size_t k = 0; k < rule.points.size(); ++k)
+      rest.row(k) = initial.row(graph.nodes[rule.points[k].side == 0 ? e.first : e.second].vertices[rule.points[k].local]);
+    e.motion = fit_rigid_motion(rule.space.mean, rest);
+  }
+}
+
+// Runs the embedding solver without handles on `result.problem` from the
+// placement and records the embedding, its energies and timings.
+void embed(Assembly& result, const Assembly_options& options, Clock::time_point setup_start)
+{
+  const int n = static_cast<int>(result.graph.nodes.size());
+  Embedding_solver solver(result.problem, options.solver);
+  result.setup_ms = milliseconds_since(setup_start);
+  const Clock::time_point solve_start = Clock::now();
+  result.report = solver.solve();
+  result.mesh.points = solver.positions();
+  result.solve_ms = milliseconds_since(solve_start);
+  result.residual_energy = result.report.energy();
+  for(int c = 0; c < solver.number_of_clusters(); ++c)
+    (c < n ? result.part_energies : result.docking_energies).push_back(solver.cluster_energy(c));
+  if(!result.mesh.points.allFinite() || !std::isfinite(result.residual_energy))
+    throw Computation_error("the assembly of " + std::to_string(n) + " parts produced non-finite positions or energy");
+}
+
 } // namespace
 
 Assembly_options training_assembly_options(const Morphable_part_model& model, int example)
@@ -174,89 +295,23 @@ Assembly_options training_assembly_options(const Morphable_part_model& model, in
 Assembly assemble(const Morphable_part_model& model, const Part_graph& input, const Assembly_options& options)
 {
   const Clock::time_point setup_start = Clock::now();
-  validate_part_graph(model, input);
-  const int n = static_cast<int>(input.nodes.size());
-  if(!options.targets.empty() && int(options.targets.size()) != n)
-    throw Input_error("assembly options", "targets", "give one target per node (" + std::to_string(n) + ")");
-  if(!options.placements.empty() && int(options.placements.size()) != n)
-    throw Input_error("assembly options", "placements", "give one placement per node (" + std::to_string(n) + ")");
-  if(options.root >= n) throw Input_error("assembly options", "root", "node " + std::to_string(options.root) + " does not exist");
-
+  check_assembly_input(model, input, options);
   Assembly result;
   result.graph = input;
-  Part_graph& graph = result.graph;
-
-  // Target shapes in the frames of the types' spaces.
-  std::vector<Point_matrix> targets(n);
-  std::vector<Rigid_motion> given_frame(n); // given target frame -> space frame
-  for(int i = 0; i < n; ++i)
-  {
-    const Part_type& type = model.types[graph.nodes[i].type];
-    if(options.targets.empty())
-      targets[i] = type.space.shape(graph.nodes[i].coordinates);
-    else
-    {
-      const Point_matrix& t = options.targets[i];
-      if(t.rows() != type.number_of_vertices || !t.allFinite())
-        throw Input_error("assembly options", "target of node " + std::to_string(i),
-                          "needs " + std::to_string(type.number_of_vertices) + " finite points");
-      given_frame[i] = fit_rigid_motion(t, type.space.mean);
-      targets[i] = given_frame[i].apply(t);
-    }
-  }
-
-  // Rigid placement: given, or breadth-first from the root along the dockings.
-  std::vector<Rigid_motion> motion(n);
-  std::vector<Point_matrix> placed_targets(n);
-  if(!options.placements.empty())
-    for(int i = 0; i < n; ++i) motion[i] = compose(options.placements[i], given_frame[i].inverse());
-  else
-  {
-    Point_matrix placed_u;
-    boost::breadth_first_search(adjacency_graph(graph), std::size_t(options.root >= 0 ? options.root : 0),
-                                boost::visitor(Placement_visitor(model, graph, targets, motion, placed_u)));
-  }
-  for(int i = 0; i < n; ++i) placed_targets[i] = motion[i].apply(targets[i]);
-
-  // Stitching: one vertex per class of identified (node, local) pairs.
-  // Differently sampled seams (merged seams) first insert their vertices
-  // into the parts that lack them: node i's inserted vertices follow its
-  // type's locals, each splitting a border edge of the part.
-  const internal::Graph_refinement refined = internal::refine_part_graph(model, graph);
-  const std::vector<internal::Part_refinement>& refinements = refined.nodes;
-  const std::vector<std::vector<std::array<int, 2>>>& merged_locals = refined.merged_locals;
-  std::vector<Point_matrix> placed_points(n);
-  for(int i = 0; i < n; ++i)
-  {
-    placed_points[i] = refinements[i].inserted.empty() ? placed_targets[i]
-                                                       : internal::refine_points(placed_targets[i], refinements[i].inserted);
-    graph.nodes[i].motion = motion[i];
-    graph.nodes[i].label = -1;
-  }
-  const Indexed_mesh mesh = internal::stitch_part_graph(model, graph, refined, placed_points, &result.face_nodes);
-  const Point_matrix& initial = mesh.points;
-  for(int node : result.face_nodes) result.face_types.push_back(graph.nodes[node].type);
-  result.seam_vertices.assign(graph.edges.size(), {});
-  for(std::size_t k = 0; k < graph.edges.size(); ++k)
-    for(const std::array<int, 2>& l : merged_locals[k])
-      result.seam_vertices[k].push_back(graph.nodes[graph.edges[k].first].vertices[l[0]]);
-
-  for(Part_edge& e : graph.edges)
-  {
-    const Docking_rule& rule = model.rules[e.rule];
-    Point_matrix rest(rule.points.size(), 3);
-    for(std::size_t k = 0; k < rule.points.size(); ++k)
-      rest.row(k) = initial.row(graph.nodes[rule.points[k].side == 0 ? e.first : e.second].vertices[rule.points[k].local]);
-    e.motion = fit_rigid_motion(rule.space.mean, rest);
-  }
+  std::vector<Rigid_motion> given_frame; // given target frame -> space frame
+  const std::vector<Point_matrix> targets = target_shapes(model, result.graph, options, given_frame);
+  const std::vector<Rigid_motion> motion = place_parts(model, result.graph, targets, given_frame, options);
+  const internal::Graph_refinement refined = internal::refine_part_graph(model, result.graph);
+  const Indexed_mesh mesh = stitch_parts(model, refined, targets, motion, result);
+  fit_edge_motions(model, mesh.points, result.graph);
 
   result.problem = internal::make_part_graph_problem(
-    model, graph, mesh,
+    model, result.graph, mesh,
     [&targets](int node, const Shape_space& space, const Eigen::VectorXd&, const Point_matrix&, const std::string&) {
       return internal::Part_target{targets[node], space.sigmas};
     },
-    [](const Shape_space& space) { return space.sigmas; }, &refinements);
-  result.initial_positions = initial;
+    [](const Shape_space& space) { return space.sigmas; }, &refined.nodes);
+  result.initial_positions = mesh.points;
   result.mesh = mesh;
 
   if(!options.solve)
@@ -264,17 +319,7 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& input, co
     result.setup_ms = milliseconds_since(setup_start);
     return result;
   }
-  Embedding_solver solver(result.problem, options.solver);
-  result.setup_ms = milliseconds_since(setup_start);
-  const Clock::time_point solve_start = Clock::now();
-  result.report = solver.solve();
-  result.mesh.points = solver.positions();
-  result.solve_ms = milliseconds_since(solve_start);
-  result.residual_energy = result.report.energy();
-  for(int c = 0; c < solver.number_of_clusters(); ++c)
-    (c < n ? result.part_energies : result.docking_energies).push_back(solver.cluster_energy(c));
-  if(!result.mesh.points.allFinite() || !std::isfinite(result.residual_energy))
-    throw Computation_error("the assembly of " + std::to_string(n) + " parts produced non-finite positions or energy");
+  embed(result, options, setup_start);
   return result;
 }
 

@@ -66,119 +66,157 @@ int absurd_coordinate(const Eigen::VectorXd& coordinates, const Shape_space& spa
   return -1;
 }
 
-} // namespace
-
-void validate_part_graph(const Morphable_part_model& model, const Part_graph& graph, const std::string& source)
+// Each node has a type of the model and finite, plausible coordinates for
+// its type's modes.
+void validate_nodes(const Morphable_part_model& model, const Part_graph& graph, const std::string& source)
 {
-  const auto fail = [&](const std::string& element, const std::string& problem) {
-    throw Input_error(source, element, problem);
-  };
-  if(graph.nodes.empty()) fail("", "the part graph has no node");
-  const int n = static_cast<int>(graph.nodes.size());
-  for(int i = 0; i < n; ++i)
+  for(std::size_t i = 0; i < graph.nodes.size(); ++i)
   {
     const Part_node& node = graph.nodes[i];
     const std::string element = "node " + std::to_string(i);
     if(node.type < 0 || node.type >= int(model.types.size()))
-      fail(element, "part type " + std::to_string(node.type) + " does not exist (the model has " +
-                      std::to_string(model.types.size()) + " types)");
+      throw Input_error(source, element, "part type " + std::to_string(node.type) + " does not exist (the model has " +
+                                           std::to_string(model.types.size()) + " types)");
+    const std::string typed = element + " (" + model.types[node.type].name + ")";
     const int modes = model.types[node.type].space.number_of_modes();
     if(node.coordinates.size() != modes)
-      fail(element + " (" + model.types[node.type].name + ")",
-           "has " + std::to_string(node.coordinates.size()) + " shape coordinates, its type has " +
-             std::to_string(modes) + " modes");
-    if(!node.coordinates.allFinite())
-      fail(element + " (" + model.types[node.type].name + ")", "has non-finite shape coordinates");
+      throw Input_error(source, typed,
+                        "has " + std::to_string(node.coordinates.size()) + " shape coordinates, its type has " +
+                          std::to_string(modes) + " modes");
+    if(!node.coordinates.allFinite()) throw Input_error(source, typed, "has non-finite shape coordinates");
     const int absurd = absurd_coordinate(node.coordinates, model.types[node.type].space);
     if(absurd >= 0)
-      fail(element + " (" + model.types[node.type].name + ")",
-           "shape coordinate " + std::to_string(absurd) +
-             " is more than 1000 standard deviations of its mode from the mean: no shape of its type");
+      throw Input_error(source, typed,
+                        "shape coordinate " + std::to_string(absurd) +
+                          " is more than 1000 standard deviations of its mode from the mean: no shape of its type");
   }
+}
+
+// Edge `k` joins two existing, distinct nodes by a rule of the grammar that
+// docks their types, with finite, plausible pair coordinates or none.
+void validate_edge(const Morphable_part_model& model, const Part_graph& graph, std::size_t k,
+                   const std::string& source)
+{
+  const int n = static_cast<int>(graph.nodes.size());
+  const Part_edge& e = graph.edges[k];
+  const std::string element = "edge " + std::to_string(k);
+  for(int end : {e.first, e.second})
+    if(end < 0 || end >= n)
+      throw Input_error(source, element,
+                        "node " + std::to_string(end) + " does not exist (the graph has " + std::to_string(n) +
+                          " nodes)");
+  if(e.first == e.second)
+    throw Input_error(source, element,
+                      "docks " + node_text(model, graph, e.first) +
+                        " to itself (a part docks to other instances, even of its own type)");
+  if(e.rule < 0 || e.rule >= int(model.rules.size()))
+    throw Input_error(source, element,
+                      "rule " + std::to_string(e.rule) + " does not exist (the model has " +
+                        std::to_string(model.rules.size()) + " rules)");
+  const Docking_rule& rule = model.rules[e.rule];
+  if(graph.nodes[e.first].type != rule.first.type || graph.nodes[e.second].type != rule.second.type)
+    throw Input_error(source, element,
+                      "is not a docking of the grammar: rule " + std::to_string(e.rule) + " docks " +
+                        site_text(model, rule.first) + " to " + site_text(model, rule.second) + ", not " +
+                        node_text(model, graph, e.first) + " to " + node_text(model, graph, e.second));
+  if(e.coordinates.size() != 0 && (e.coordinates.size() != rule.space.number_of_modes() || !e.coordinates.allFinite()))
+    throw Input_error(source, element,
+                      "needs " + std::to_string(rule.space.number_of_modes()) +
+                        " finite pair coordinates (or none: the pair's mean)");
+  const int absurd = absurd_coordinate(e.coordinates, rule.space);
+  if(absurd >= 0)
+    throw Input_error(source, element,
+                      "pair coordinate " + std::to_string(absurd) +
+                        " is more than 1000 standard deviations of its mode: no pair geometry of its rule");
+}
+
+// Each edge is valid and no docking site of a node carries more dockings
+// than the training examples show at that site.
+void validate_edges(const Morphable_part_model& model, const Part_graph& graph, const std::string& source)
+{
   const std::map<Site_ref, int> capacity = observed_site_degrees(model);
   std::map<std::pair<int, int>, std::vector<int>> edges_at_site; // (node, site) -> edges
   for(std::size_t k = 0; k < graph.edges.size(); ++k)
   {
+    validate_edge(model, graph, k, source);
     const Part_edge& e = graph.edges[k];
-    const std::string element = "edge " + std::to_string(k);
-    for(int end : {e.first, e.second})
-      if(end < 0 || end >= n)
-        fail(element, "node " + std::to_string(end) + " does not exist (the graph has " + std::to_string(n) +
-                        " nodes)");
-    if(e.first == e.second)
-      fail(element, "docks " + node_text(model, graph, e.first) +
-                      " to itself (a part docks to other instances, even of its own type)");
-    if(e.rule < 0 || e.rule >= int(model.rules.size()))
-      fail(element, "rule " + std::to_string(e.rule) + " does not exist (the model has " +
-                      std::to_string(model.rules.size()) + " rules)");
     const Docking_rule& rule = model.rules[e.rule];
-    if(graph.nodes[e.first].type != rule.first.type || graph.nodes[e.second].type != rule.second.type)
-      fail(element, "is not a docking of the grammar: rule " + std::to_string(e.rule) + " docks " +
-                      site_text(model, rule.first) + " to " + site_text(model, rule.second) + ", not " +
-                      node_text(model, graph, e.first) + " to " + node_text(model, graph, e.second));
-    if(e.coordinates.size() != 0 &&
-       (e.coordinates.size() != rule.space.number_of_modes() || !e.coordinates.allFinite()))
-      fail(element, "needs " + std::to_string(rule.space.number_of_modes()) +
-                      " finite pair coordinates (or none: the pair's mean)");
-    if(absurd_coordinate(e.coordinates, rule.space) >= 0)
-      fail(element, "pair coordinate " + std::to_string(absurd_coordinate(e.coordinates, rule.space)) +
-                      " is more than 1000 standard deviations of its mode: no pair geometry of its rule");
     for(const auto& [node, site] : {std::make_pair(e.first, rule.first), std::make_pair(e.second, rule.second)})
     {
       std::vector<int>& at = edges_at_site[{node, site.site}];
       at.push_back(static_cast<int>(k));
       const int limit = capacity.count(site) ? capacity.at(site) : 1;
       if(int(at.size()) > limit)
-        fail(element, "uses " + site_text(model, site) + " of " + node_text(model, graph, node) +
-                        ", already used by edge " + std::to_string(at.front()) +
-                        (limit == 1 ? std::string(" (a docking site carries one docking)")
-                                    : " (at most " + std::to_string(limit) + " were observed)"));
+        throw Input_error(source, "edge " + std::to_string(k),
+                          "uses " + site_text(model, site) + " of " + node_text(model, graph, node) +
+                            ", already used by edge " + std::to_string(at.front()) +
+                            (limit == 1 ? std::string(" (a docking site carries one docking)")
+                                        : " (at most " + std::to_string(limit) + " were observed)"));
     }
   }
-  // Seams close consistently: the shared-vertex classes never identify two
-  // local vertices of one node (a cycle of boundary dockings whose seams do
-  // not meet, as a tile inserted into a grid).
-  {
-    std::vector<int> offset(n + 1, 0);
-    for(int i = 0; i < n; ++i) offset[i + 1] = offset[i] + model.types[graph.nodes[i].type].number_of_vertices;
-    std::vector<int> parent(offset[n]);
-    for(int v = 0; v < offset[n]; ++v) parent[v] = v;
-    std::vector<std::map<int, int>> members(offset[n]); // class root -> node -> local
-    for(int i = 0; i < n; ++i)
-      for(int l = 0; l < offset[i + 1] - offset[i]; ++l) members[offset[i] + l][i] = l;
-    const auto find = [&](int v) {
-      while(parent[v] != v) v = parent[v] = parent[parent[v]];
-      return v;
-    };
-    for(std::size_t k = 0; k < graph.edges.size(); ++k)
-    {
-      const Part_edge& e = graph.edges[k];
-      for(const auto& [l0, l1] : model.rules[e.rule].seam)
-      {
-        int a = find(offset[e.first] + l0), b = find(offset[e.second] + l1);
-        if(a == b) continue;
-        if(members[a].size() < members[b].size()) std::swap(a, b);
-        for(const auto& [node, local] : members[b])
-        {
-          const auto it = members[a].find(node);
-          if(it != members[a].end() && it->second != local)
-            fail("edge " + std::to_string(k),
-                 "its seam identifies local vertices " + std::to_string(it->second) + " and " +
-                   std::to_string(local) + " of " + node_text(model, graph, node) +
-                   " (a cycle of dockings whose seams do not meet)");
-          members[a][node] = local;
-        }
-        members[b].clear();
-        parent[b] = a;
-      }
-    }
-  }
+}
 
-  std::vector<int> component(n);
-  boost::connected_components(adjacency_graph(graph), component.data());
+// Seams close consistently: the shared-vertex classes never identify two
+// local vertices of one node (a cycle of boundary dockings whose seams do
+// not meet, as a tile inserted into a grid).
+void validate_seams(const Morphable_part_model& model, const Part_graph& graph, const std::string& source)
+{
+  const int n = static_cast<int>(graph.nodes.size());
+  std::vector<int> offset(n + 1, 0);
+  for(int i = 0; i < n; ++i) offset[i + 1] = offset[i] + model.types[graph.nodes[i].type].number_of_vertices;
+  std::vector<int> parent(offset[n]);
+  for(int v = 0; v < offset[n]; ++v) parent[v] = v;
+  std::vector<std::map<int, int>> members(offset[n]); // class root -> node -> local
   for(int i = 0; i < n; ++i)
+    for(int l = 0; l < offset[i + 1] - offset[i]; ++l) members[offset[i] + l][i] = l;
+  const auto find = [&](int v) {
+    while(parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(std::size_t k = 0; k < graph.edges.size(); ++k)
+  {
+    const Part_edge& e = graph.edges[k];
+    for(const auto& [l0, l1] : model.rules[e.rule].seam)
+    {
+      int a = find(offset[e.first] + l0), b = find(offset[e.second] + l1);
+      if(a == b) continue;
+      if(members[a].size() < members[b].size()) std::swap(a, b);
+      for(const auto& [node, local] : members[b])
+      {
+        const auto it = members[a].find(node);
+        if(it != members[a].end() && it->second != local)
+          throw Input_error(source, "edge " + std::to_string(k),
+                            "its seam identifies local vertices " + std::to_string(it->second) + " and " +
+                              std::to_string(local) + " of " + node_text(model, graph, node) +
+                              " (a cycle of dockings whose seams do not meet)");
+        members[a][node] = local;
+      }
+      members[b].clear();
+      parent[b] = a;
+    }
+  }
+}
+
+// Every node is reachable from node 0 along the edges.
+void validate_connected(const Morphable_part_model& model, const Part_graph& graph, const std::string& source)
+{
+  std::vector<int> component(graph.nodes.size());
+  boost::connected_components(adjacency_graph(graph), component.data());
+  for(std::size_t i = 0; i < component.size(); ++i)
     if(component[i] != component[0])
-      fail(node_text(model, graph, i), "is not connected to node 0 (a part graph is one assembly)");
+      throw Input_error(source, node_text(model, graph, int(i)),
+                        "is not connected to node 0 (a part graph is one assembly)");
+}
+
+} // namespace
+
+void validate_part_graph(const Morphable_part_model& model, const Part_graph& graph, const std::string& source)
+{
+  if(graph.nodes.empty()) throw Input_error(source, "", "the part graph has no node");
+  validate_nodes(model, graph, source);
+  validate_edges(model, graph, source);
+  validate_seams(model, graph, source);
+  validate_connected(model, graph, source);
 }
 
 Part_graph part_graph_of_example(const Morphable_part_model& model, int example)

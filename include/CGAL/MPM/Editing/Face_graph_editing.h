@@ -58,7 +58,19 @@ void copy_training_example(const Morphable_part_model& model, int example, Mutab
 namespace internal {
 
 // Solves an editing problem of the example `g` holds and writes the result
-// into `g`; handles are (vertex descriptor, target point) pairs.
+// into `g`; the handles `h` index the vertices in the order of `vertices(g)`
+// (symmetrization and caricature pass none).
+template <class FaceGraph, class NamedParameters>
+Edit_result edit_face_graph(const Morphable_part_model& model, const Embedding_problem& problem, FaceGraph& g,
+                            const Handle_set& h, const Edit_options& options, const NamedParameters& np)
+{
+  Edit_result r = solve_edit(model, problem, h, options);
+  write_positions(r.mesh.points, g, np);
+  return r;
+}
+
+// The same with handles given as (vertex descriptor, target point) pairs,
+// as `deform()` takes them.
 template <class FaceGraph, class HandleRange, class NamedParameters>
 Edit_result edit_face_graph(const Morphable_part_model& model, const Embedding_problem& problem, FaceGraph& g,
                             const HandleRange& handles, const Edit_options& options, const NamedParameters& np)
@@ -75,9 +87,7 @@ Edit_result edit_face_graph(const Morphable_part_model& model, const Embedding_p
       CGAL::to_double(target.z());
     h.vertices.push_back(it->second);
   }
-  Edit_result r = solve_edit(model, problem, h, options);
-  write_positions(r.mesh.points, g, np);
-  return r;
+  return edit_face_graph(model, problem, g, h, options, np);
 }
 
 } // namespace internal
@@ -107,10 +117,8 @@ Edit_result symmetrize(const Morphable_part_model& model, FaceGraph& g,
                        const Edit_options& options = Edit_options(),
                        const NamedParameters& np = parameters::default_values())
 {
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using Point = typename boost::property_traits<typename GetVertexPointMap<FaceGraph>::type>::value_type;
   return internal::edit_face_graph(model, make_symmetrization_problem(model, options.example, symmetrization), g,
-                                   std::vector<std::pair<vertex_descriptor, Point>>(), options, np);
+                                   Handle_set(), options, np);
 }
 
 /// \ingroup PkgMPMRef
@@ -121,10 +129,8 @@ Edit_result caricature(const Morphable_part_model& model, double factor, FaceGra
                        const Edit_options& options = Edit_options(),
                        const NamedParameters& np = parameters::default_values())
 {
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using Point = typename boost::property_traits<typename GetVertexPointMap<FaceGraph>::type>::value_type;
-  return internal::edit_face_graph(model, make_caricature_problem(model, factor, options.example), g,
-                                   std::vector<std::pair<vertex_descriptor, Point>>(), options, np);
+  return internal::edit_face_graph(model, make_caricature_problem(model, factor, options.example), g, Handle_set(),
+                                   options, np);
 }
 
 /// \ingroup PkgMPMRef
