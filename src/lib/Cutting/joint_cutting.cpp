@@ -57,7 +57,33 @@ Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector
                         "is out of range (the mesh has " + std::to_string(mesh.number_of_vertices()) + " vertices)");
     if(!in_face[std::size_t(v)]) throw Input_error(mesh_source, vertex_name(v), "belongs to no face");
   }
-  return internal::cut_at_vertices(internal::Joint_finder(mesh, options, mesh_source), vertices, options);
+  return Joint_cutter(mesh, options, mesh_source).cut(vertices);
+}
+
+Joint_cutter::Joint_cutter(const Indexed_mesh& mesh, const Joint_cutting_options& options,
+                           const std::string& mesh_source)
+  : options_(options)
+{
+  check_options(options);
+  finder_ = std::make_unique<internal::Joint_finder>(mesh, options, mesh_source);
+}
+
+Joint_cutter::~Joint_cutter() = default;
+
+Joint_cutting_result Joint_cutter::cut(const std::vector<int>& vertices) const
+{
+  const Indexed_mesh& mesh = finder_->mesh();
+  std::vector<bool> in_face(std::size_t(mesh.number_of_vertices()), false);
+  for(const Triangle& t : mesh.triangles)
+    for(int v : t)
+      if(v >= 0 && v < mesh.number_of_vertices()) in_face[std::size_t(v)] = true;
+  for(int v : vertices) {
+    if(v < 0 || v >= mesh.number_of_vertices())
+      throw Input_error(finder_->source(), vertex_name(v),
+                        "is out of range (the mesh has " + std::to_string(mesh.number_of_vertices()) + " vertices)");
+    if(!in_face[std::size_t(v)]) throw Input_error(finder_->source(), vertex_name(v), "belongs to no face");
+  }
+  return internal::cut_at_vertices(*finder_, vertices, options_);
 }
 
 namespace internal {

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,31 @@ struct Joint_cutting_result
 Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices,
                                      const Joint_cutting_options& options = Joint_cutting_options(),
                                      const std::string& mesh_source = "mesh");
+
+namespace internal {
+class Joint_finder;
+}
+
+/// \ingroup PkgMPMRef
+/// `cut_at_vertices()` on one mesh, click after click: the curve skeleton
+/// and the crease weights are computed once, when the cutter is made, so an
+/// interactive tool re-cuts the mesh at each new click without them (about a
+/// second on a 7,000-vertex hand). The mesh must outlive the cutter.
+class Joint_cutter
+{
+public:
+  /// Throws `Input_error` naming the mesh for options out of range, a mesh
+  /// with holes or several components, or one whose skeleton cannot be computed.
+  explicit Joint_cutter(const Indexed_mesh& mesh, const Joint_cutting_options& options = Joint_cutting_options(),
+                        const std::string& mesh_source = "mesh");
+  ~Joint_cutter();
+  /// As `cut_at_vertices()` with this cutter's mesh and options.
+  Joint_cutting_result cut(const std::vector<int>& vertices) const;
+
+private:
+  std::unique_ptr<internal::Joint_finder> finder_;
+  Joint_cutting_options options_;
+};
 
 } // namespace MPM
 } // namespace CGAL
