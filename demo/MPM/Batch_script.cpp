@@ -20,6 +20,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -141,6 +142,7 @@ public:
     : session_(session), window_(window), script_(script)
   {
     add_model_commands();
+    add_cutting_commands();
     add_handle_commands();
     add_edit_commands();
     add_graph_commands();
@@ -219,6 +221,49 @@ private:
       session_.load_model(w[1]);
       report_model();
     });
+  }
+
+  // A mesh nobody has segmented: cut it (clicks or proposed joints), show
+  // and edit the proposed part types, learn.
+  void add_cutting_commands()
+  {
+    add("open", 1, 1, "open MESH", [this](const Words& w) {
+      session_.open_raw_mesh(w[1]);
+      std::cout << "  " << w[1] << ": " << session_.rest().number_of_vertices() << " vertices, to be cut\n";
+    });
+    add("cut-at", 1, 1, "cut-at VERTEX", [this](const Words& w) {
+      const CGAL::MPM::Joint_cut& cut = session_.add_cut(integer(w[1]));
+      std::cout << "  cut of " << cut.path.size() - 1 << " edges, length " << cut.length << "\n";
+      report_cutting();
+    });
+    add("uncut", 1, 1, "uncut VERTEX", [this](const Words& w) {
+      const int removed = session_.remove_cut_near(integer(w[1]));
+      std::cout << "  removed the cut clicked at vertex " << removed << "\n";
+      report_cutting();
+    });
+    add("cut-auto", 0, 1, "cut-auto [SENSITIVITY]", [this](const Words& w) {
+      const int limbs = session_.propose_cuts(w.size() > 1 ? number(w[1]) : 0.5);
+      std::cout << "  " << limbs << " limbs\n";
+      report_cutting();
+    });
+    add("types", 0, 0, "types", [this](const Words&) {
+      if(!session_.cutting()) throw Script_error("no mesh is being cut (use 'open MESH')");
+      for(const CGAL::MPM::Segment_proposal& s : session_.cutting()->part_types().segments)
+        std::cout << "  label " << s.label << ": " << s.faces << " faces, " << s.seam_loops << " seams, depth "
+                  << s.depth << ", type " << s.type << "\n";
+    });
+    add("set-type", 2, 2, "set-type LABEL TYPE", [this](const Words& w) { session_.set_part_type(integer(w[1]), w[2]); });
+    add("learn", 0, 0, "learn", [this](const Words&) {
+      session_.learn_from_cuts();
+      report_model();
+    });
+  }
+
+  void report_cutting()
+  {
+    const Raw_mesh_cutting& c = *session_.cutting();
+    std::cout << "  " << c.cuts().size() << " cuts, "
+              << std::set<int>(c.labels().begin(), c.labels().end()).size() << " parts\n";
   }
 
   void add_handle_commands()
@@ -422,10 +467,18 @@ private:
   {
     if(w[3] != "shift" && w[3] != "alt") throw Script_error("expected 'click X Y shift' or 'click X Y alt'");
     const std::size_t before = session_.handle_vertices().size();
+    const std::size_t cuts_before = session_.cutting() ? session_.cutting()->cuts().size() : 0;
     const QPoint at(integer(w[1]), integer(w[2]));
     send_mouse(QEvent::MouseButtonPress, at, w[3] == "shift" ? Qt::ShiftModifier : Qt::AltModifier);
     send_mouse(QEvent::MouseButtonRelease, at, w[3] == "shift" ? Qt::ShiftModifier : Qt::AltModifier);
-    if(w[3] == "shift")
+    if(session_.cutting())
+    {
+      // On a mesh being cut, Shift+click adds a cut and Alt+click removes one.
+      if(session_.cutting()->cuts().size() == cuts_before)
+        throw Script_error(w[3] == "shift" ? "no cut was made at the pixel" : "no cut was removed");
+      report_cutting();
+    }
+    else if(w[3] == "shift")
     {
       if(session_.handle_vertices().size() == before) throw Script_error("no vertex under the pixel");
       std::cout << "  " << session_.handle_vertices().size() << " handles\n";

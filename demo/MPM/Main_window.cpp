@@ -1,12 +1,14 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Main_window.h"
+#include "Part_type_table.h"
 
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -61,6 +63,33 @@ Main_window::Main_window(Session& session) : session_(session)
   model_layout->addWidget(button("Open mesh + labels + annotation...", model_box, [this] { open_mesh(); }));
   model_layout->addWidget(button("Open model (.mpm)...", model_box, [this] { open_model(); }));
   column->addWidget(model_box);
+
+  // A mesh nobody has segmented: cuts, part types, learning.
+  QGroupBox* cut_box = new QGroupBox("Cut a mesh into parts", panel);
+  QVBoxLayout* cut_layout = new QVBoxLayout(cut_box);
+  cut_layout->addWidget(button("Open a mesh to cut...", cut_box, [this] { open_raw_mesh(); }));
+  cut_layout->addWidget(new QLabel("Shift+click next to a joint: cut there<br>Alt+click a cut: remove it", cut_box));
+  QHBoxLayout* propose_row = new QHBoxLayout;
+  QDoubleSpinBox* sensitivity = new QDoubleSpinBox(cut_box);
+  sensitivity->setRange(0., 1.);
+  sensitivity->setSingleStep(0.1);
+  sensitivity->setValue(0.5);
+  sensitivity->setToolTip("sensitivity: 0 cuts limbs off the body only, higher proposes more joints along them");
+  propose_row->addWidget(button("Propose joints", cut_box, [this, sensitivity] {
+    guarded([this, sensitivity] {
+      const int limbs = session_.propose_cuts(sensitivity->value());
+      statusBar()->showMessage(QString("%1 cuts proposed on %2 limbs; Shift+click adds one, Alt+click removes one")
+                                 .arg(session_.cutting()->cuts().size())
+                                 .arg(limbs));
+    });
+  }));
+  propose_row->addWidget(sensitivity);
+  cut_layout->addLayout(propose_row);
+  QHBoxLayout* learn_row = new QHBoxLayout;
+  learn_row->addWidget(button("Part types...", cut_box, [this] { guarded([this] { edit_part_types(this, session_); }); }));
+  learn_row->addWidget(button("Learn", cut_box, [this] { guarded([this] { session_.learn_from_cuts(); }); }));
+  cut_layout->addLayout(learn_row);
+  column->addWidget(cut_box);
 
   // Handles
   QGroupBox* handle_box = new QGroupBox("Handles", panel);
@@ -164,6 +193,7 @@ Main_window::Main_window(Session& session) : session_(session)
 
   QMenu* file = menuBar()->addMenu("&File");
   file->addAction("Open mesh...", this, [this] { open_mesh(); });
+  file->addAction("Open a mesh to cut...", this, [this] { open_raw_mesh(); });
   file->addAction("Open model...", this, [this] { open_model(); });
   file->addAction("Screenshot...", this, [this] { take_screenshot(); });
   file->addSeparator();
@@ -178,9 +208,13 @@ Main_window::Main_window(Session& session) : session_(session)
   connect(&session_, &Session::scene_changed, this, [this] {
     sync_controls();
     on_part_selected(-1);
-    if(session_.handle_vertices().empty())
+    if(session_.cutting())
+      statusBar()->showMessage("Shift+click next to a joint: cut there | Alt+click: remove a cut | "
+                               "Propose joints: cut it all | Learn: make the model");
+    else if(session_.handle_vertices().empty())
       statusBar()->showMessage("Shift+click: add a handle | Ctrl+drag a handle: deform | "
                                "Alt+click: select a part | drag: rotate");
+    on_frame();
   });
   connect(viewer_, &Viewer::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(viewer_, &Viewer::part_selected, this, &Main_window::on_part_selected);
@@ -236,9 +270,14 @@ void Main_window::guarded(const std::function<void()>& action)
 void Main_window::sync_controls()
 {
   syncing_ = true;
-  source_label_->setText(session_.has_model() ? session_.source_name() +
-                                                  (session_.graph_edited() ? " (edited part graph)" : "")
-                                              : "no model");
+  if(const Raw_mesh_cutting* cutting = session_.cutting())
+    source_label_->setText(QString("%1: %2 cuts (no model yet: learn)")
+                             .arg(session_.source_name())
+                             .arg(cutting->cuts().size()));
+  else
+    source_label_->setText(session_.has_model() ? session_.source_name() +
+                                                    (session_.graph_edited() ? " (edited part graph)" : "")
+                                                : "no model");
   const int family = family_->findText(QString::fromStdString(session_.synthetic_family()));
   if(family >= 0) family_->setCurrentIndex(family);
   mode_->setCurrentIndex(int(session_.mode()));
@@ -265,16 +304,19 @@ QString Main_window::solver_status() const
   return s;
 }
 
-void Main_window::on_frame() { solver_label_->setText(solver_status()); }
+void Main_window::on_frame()
+{
+  solver_label_->setText(session_.has_model() ? solver_status() : QString("no model: nothing to solve"));
+}
 
 void Main_window::on_part_selected(int node)
 {
-  const CGAL::MPM::Part_graph& g = session_.shown_graph();
-  if(node < 0 || node >= int(g.nodes.size()))
+  if(!session_.has_model() || node < 0 || node >= int(session_.shown_graph().nodes.size()))
   {
     part_label_->setText("Alt+click a part to select it");
     return;
   }
+  const CGAL::MPM::Part_graph& g = session_.shown_graph();
   part_label_->setText(QString("Part %1: %2")
                          .arg(node)
                          .arg(QString::fromStdString(session_.model().types[g.nodes[node].type].name)));
@@ -300,6 +342,13 @@ void Main_window::open_mesh()
   const QString annotation = QFileDialog::getOpenFileName(
     this, "Its annotation (.json; cancel: types proposed from the segmentation, or parts grouped by connectivity)", guess + ".json", "Annotations (*.json)");
   guarded([&] { session_.load_labeled_mesh(mesh.toStdString(), labels.toStdString(), annotation.toStdString()); });
+}
+
+void Main_window::open_raw_mesh()
+{
+  const QString mesh = QFileDialog::getOpenFileName(this, "Open a closed mesh to cut into parts", QString(),
+                                                    "Meshes (*.off *.obj *.ply *.stl)");
+  if(!mesh.isEmpty()) guarded([&] { session_.open_raw_mesh(mesh.toStdString()); });
 }
 
 void Main_window::open_model()

@@ -38,6 +38,7 @@ private:
   void guarded(const std::function<void()>& action);
   QString choose_save_file(const QString& title, const QString& filter, const QString& suffix);
   void open_mesh();
+  void open_raw_mesh();
   void open_model();
   void on_frame();
   void on_part_selected(int node);

@@ -60,6 +60,22 @@ private:
   std::vector<int>* reached_by_; // a pointer: Boost.Graph copies its visitor
 };
 
+// Mesh edges between faces of different parts.
+std::vector<std::array<int, 2>> seam_edges_of(const MPM::Indexed_mesh& mesh, const std::vector<int>& face_parts)
+{
+  std::vector<std::array<int, 2>> seams;
+  std::unordered_map<std::uint64_t, int> part_of_edge;
+  const auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const int a = mesh.triangles[f][c], b = mesh.triangles[f][(c + 1) % 3];
+      const auto [it, inserted] = part_of_edge.emplace(key(a, b), face_parts[f]);
+      if(!inserted && it->second != face_parts[f]) seams.push_back({{a, b}});
+    }
+  return seams;
+}
+
 } // namespace
 
 // ---------------------------------------------------------------------------
@@ -241,9 +257,81 @@ void Session::load_model(const std::string& path)
   adopt_model(MPM::load_model(path), QString::fromStdString(path));
 }
 
+void Session::open_raw_mesh(const std::string& path)
+{
+  cutting_ = std::make_unique<Raw_mesh_cutting>(path);
+  has_model_ = false;
+  problem_.reset();
+  source_ = QString::fromStdString(path);
+  family_.clear();
+  show_cutting();
+}
+
+void Session::show_cutting()
+{
+  rest_ = cutting_->mesh();
+  face_nodes_ = cutting_->labels();
+  face_types_ = face_nodes_;
+  seam_edges_ = seam_edges_of(rest_, face_nodes_);
+  docking_vertices_.clear();
+  handle_vertices_.clear();
+  handle_groups_.clear();
+  handle_offsets_.resize(0, 3);
+  frame_ = Solve_frame();
+  frame_.positions = rest_.points;
+  frame_.serial = serial_;
+  Q_EMIT scene_changed();
+}
+
+const MPM::Joint_cut& Session::add_cut(int vertex)
+{
+  if(!cutting_) throw MPM::Input_error("demo", "cut", "open a mesh to cut first");
+  const MPM::Joint_cut& cut = cutting_->add_cut(vertex);
+  show_cutting();
+  return cut;
+}
+
+int Session::remove_cut_near(int vertex)
+{
+  if(!cutting_) throw MPM::Input_error("demo", "cut", "open a mesh to cut first");
+  const int removed = cutting_->remove_cut_near(vertex);
+  show_cutting();
+  return removed;
+}
+
+int Session::propose_cuts(double sensitivity)
+{
+  if(!cutting_) throw MPM::Input_error("demo", "cut", "open a mesh to cut first");
+  const int limbs = cutting_->propose(sensitivity);
+  show_cutting();
+  return limbs;
+}
+
+void Session::set_part_type(int label, const std::string& type)
+{
+  if(!cutting_) throw MPM::Input_error("demo", "part type", "open a mesh to cut first");
+  cutting_->set_part_type(label, type);
+}
+
+void Session::learn_from_cuts()
+{
+  if(!cutting_) throw MPM::Input_error("demo", "learn", "open a mesh to cut first");
+  if(cutting_->cuts().empty()) throw MPM::Input_error(cutting_->path(), "cuts", "none yet: cut the mesh first");
+  const MPM::Labeled_mesh labeled = cutting_->labeled_mesh();
+  MPM::validate_labeled_mesh(labeled);
+  adopt_model(MPM::learn_morphable_part_model(labeled, cutting_->part_types().annotation),
+              QString::fromStdString(cutting_->path()));
+}
+
+void Session::require_model(const std::string& what) const
+{
+  if(!has_model_) throw MPM::Input_error("demo", what, "needs a model: open or learn one first");
+}
+
 void Session::adopt_model(MPM::Morphable_part_model&& model, const QString& source, const std::string& family)
 {
   if(model.examples.empty()) throw MPM::Input_error(source.toStdString(), "model", "has no training example");
+  cutting_.reset();
   // Derived repetition rules let the grammar lengthen chains (a finger).
   MPM::add_repetition_rules(model);
   model_ = std::move(model);
@@ -264,6 +352,7 @@ const MPM::Part_graph& Session::shown_graph() const
 
 void Session::rebuild()
 {
+  require_model("an edit");
   MPM::Embedding_problem problem;
   if(!graph_edited_)
   {
@@ -317,16 +406,7 @@ void Session::set_scene(const MPM::Indexed_mesh& rest, const MPM::Part_graph& gr
   for(std::size_t f = 0; f < face_nodes_.size(); ++f)
     if(face_nodes_[f] >= 0) face_types_[f] = graph.nodes[face_nodes_[f]].type;
 
-  seam_edges_.clear();
-  std::unordered_map<std::uint64_t, int> node_of_edge;
-  const auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
-  for(std::size_t f = 0; f < rest_.triangles.size(); ++f)
-    for(int c = 0; c < 3; ++c)
-    {
-      const int a = rest_.triangles[f][c], b = rest_.triangles[f][(c + 1) % 3];
-      const auto [it, inserted] = node_of_edge.emplace(key(a, b), face_nodes_[f]);
-      if(!inserted && it->second != face_nodes_[f]) seam_edges_.push_back({{a, b}});
-    }
+  seam_edges_ = seam_edges_of(rest_, face_nodes_);
 
   docking_vertices_.clear();
   for(const MPM::Part_node& node : graph.nodes)
@@ -670,7 +750,11 @@ void Session::save_mesh(const std::string& path, bool arap_result) const
   MPM::write_mesh_file(mesh, path, &colors);
 }
 
-void Session::save_model(const std::string& path) const { MPM::save_model(model_, path); }
+void Session::save_model(const std::string& path) const
+{
+  require_model("saving a model");
+  MPM::save_model(model_, path);
+}
 
 void Session::save_handles(const std::string& path) const
 {

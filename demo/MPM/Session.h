@@ -8,6 +8,8 @@
 #ifndef MPM_DEMO_SESSION_H
 #define MPM_DEMO_SESSION_H
 
+#include "Raw_mesh_cutting.h"
+
 #include <CGAL/MPM/Assembly/Assembly.h>
 #include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/Solver/Handle_set.h>
@@ -127,6 +129,25 @@ public:
   void load_model(const std::string& path);
   /// @}
   bool has_model() const { return has_model_; }
+
+  /// \name Starting from a mesh nobody has segmented (no model until `learn_from_cuts()`)
+  /// @{
+  /// Shows the mesh uncut, ready for cuts; throws `Input_error` naming the file.
+  void open_raw_mesh(const std::string& path);
+  /// The mesh being cut, or null when a model is shown.
+  Raw_mesh_cutting* cutting() { return cutting_.get(); }
+  const Raw_mesh_cutting* cutting() const { return cutting_.get(); }
+  /// Adds the cut around the limb at `vertex` (one click per joint).
+  const CGAL::MPM::Joint_cut& add_cut(int vertex);
+  /// Removes the cut nearest `vertex`; returns the vertex it was clicked at, or -1.
+  int remove_cut_near(int vertex);
+  /// Replaces the cuts with proposed joints; returns the number of limbs.
+  int propose_cuts(double sensitivity);
+  /// Gives segment `label` of the cut mesh the part type `type`.
+  void set_part_type(int label, const std::string& type);
+  /// Learns a model from the cut mesh and its part types, and shows it.
+  void learn_from_cuts();
+  /// @}
   const QString& source_name() const { return source_; }
   /// The synthetic family shown (its command-line name), or empty.
   const std::string& synthetic_family() const { return family_; }
@@ -227,6 +248,9 @@ Q_SIGNALS:
 
 private:
   void adopt_model(CGAL::MPM::Morphable_part_model&& model, const QString& source, const std::string& family = "");
+  /// Shows the mesh being cut, coloured by its regions.
+  void show_cutting();
+  void require_model(const std::string& what) const;
   void rebuild();
   void set_scene(const CGAL::MPM::Indexed_mesh& rest, const CGAL::MPM::Part_graph& graph,
                  std::vector<int> face_nodes);
@@ -258,6 +282,7 @@ private:
   std::uint64_t serial_ = 0;
   Solve_frame frame_;
   Solver_thread thread_;
+  std::unique_ptr<Raw_mesh_cutting> cutting_;
 };
 
 } // namespace mpm_demo

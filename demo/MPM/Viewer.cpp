@@ -467,6 +467,21 @@ int Viewer::handle_near(const QPoint& pixel) const
   return best;
 }
 
+void Viewer::cut_click(int vertex, bool remove)
+{
+  if(remove)
+  {
+    const int removed = session_.remove_cut_near(vertex);
+    Q_EMIT message(removed < 0 ? QString("No cut to remove") : QString("Removed the cut clicked at vertex %1").arg(removed));
+    return;
+  }
+  const CGAL::MPM::Joint_cut& cut = session_.add_cut(vertex);
+  Q_EMIT message(QString("Cut at vertex %1: %2 edges, length %3; Alt+click it to remove it")
+                   .arg(vertex)
+                   .arg(cut.path.size() - 1)
+                   .arg(cut.length, 0, 'g', 4));
+}
+
 void Viewer::mousePressEvent(QMouseEvent* event)
 {
   const Qt::KeyboardModifiers m = event->modifiers();
@@ -499,6 +514,11 @@ void Viewer::mousePressEvent(QMouseEvent* event)
     }
     const auto [vertex, face] = pick(event->pos());
     if(vertex < 0) return;
+    if(session_.cutting())
+    {
+      cut_click(vertex, m & Qt::AltModifier);
+      return;
+    }
     if(m & Qt::AltModifier)
     {
       select_part(session_.face_nodes()[face]);
@@ -557,6 +577,8 @@ QString Viewer::helpString() const
          "<b>Ctrl+drag</b> a handle (black dot): move it and its group; the solver follows live.<br>"
          "<b>Ctrl+Shift+drag</b> a handle: join it to the group of the last handle dragged.<br>"
          "<b>Alt+click</b> a part: select it for part-graph editing.<br>"
+         "On a mesh opened to be cut: <b>Shift+click</b> next to a joint adds the cut around the limb there, "
+         "<b>Alt+click</b> removes the nearest cut.<br>"
          "Left drag: rotate, right drag: pan, wheel: zoom.</p>";
 }
 

@@ -57,6 +57,8 @@ private:
   void on_positions_changed();
   /// Vertex and face of the MPM mesh under a pixel; {-1, -1} when none.
   std::pair<int, int> pick(const QPoint& pixel);
+  /// On a mesh being cut: Shift+click adds the cut at `vertex`, Alt+click removes the nearest.
+  void cut_click(int vertex, bool remove);
   /// Handle whose target is drawn within a few pixels of `pixel`, or -1.
   int handle_near(const QPoint& pixel) const;
   /// World offset of the MPM mesh (left) and of the ARAP mesh (right).

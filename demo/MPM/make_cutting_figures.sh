@@ -1,7 +1,8 @@
 #!/bin/sh
 # Pictures of doc/MPM/Cutting.md: joints proposed automatically (mpm cut
 # --auto) next to the human segmentation, on three meshes of the Princeton
-# Segmentation Benchmark.
+# Segmentation Benchmark; and the demo's window cutting a raw hand
+# (doc/MPM/Demo.md).
 # Usage: demo/MPM/make_cutting_figures.sh [PSB_DIR] [MPM_DEMO] [MPM]
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -26,6 +27,12 @@ seams on
 screenshot $fig/human_cut_$mesh.png
 SCRIPT
 done
+cat >> "$work/script.txt" <<SCRIPT
+window-size 1100 640
+open $psb/hand_190.off
+cut-auto
+screenshot-window $fig/demo_cutting.png
+SCRIPT
 
 if [ -z "${DISPLAY:-}" ]; then
   xvfb-run -a "$demo" --batch "$work/script.txt"

@@ -6,8 +6,10 @@
 # dragged by synthetic mouse events, a scripted drag, a symmetrize and a
 # segment insertion on a small synthetic hand, screenshots
 # after each, checked (by the demo's own check-image and compare-images
-# commands) to be not blank and to differ from one another. Then checks that
-# a script error fails with the script's line named.
+# commands) to be not blank and to differ from one another. Then the start
+# from a mesh nobody has segmented: the hand's surface opened raw, cut at
+# proposed joints, one cut removed by Alt+click, part types listed, learned.
+# Then checks that a script error fails with the script's line named.
 #
 # usage: demo_batch_test.sh MPM_DEMO OUTPUT_DIRECTORY
 set -eu
@@ -53,6 +55,34 @@ SCRIPT
 run "$out/edit.txt" | tee "$out/edit.log"
 if ! grep -q "5 frames of [0-9]* vertices: solver .* ms, shown .* ms after the drag" "$out/edit.log"; then
   echo "FAIL: profile-drag did not report its frames" >&2
+  exit 1
+fi
+
+cat > "$out/cut.txt" <<SCRIPT
+size 320 240
+synth hand 3000
+save-mesh $out/raw_hand.off
+open $out/raw_hand.off
+view 0 30
+screenshot $out/raw.png
+cut-auto
+screenshot $out/cut.png
+click 160 130 alt
+types
+learn
+screenshot $out/learned.png
+check-image $out/raw.png
+compare-images $out/raw.png $out/cut.png
+compare-images $out/raw.png $out/learned.png
+SCRIPT
+run "$out/cut.txt" | tee "$out/cut.log"
+proposed=$(sed -n 's/^  \([0-9]*\) cuts, \([0-9]*\) parts$/\1/p' "$out/cut.log" | head -1)
+if [ -z "$proposed" ] || [ "$proposed" -lt 10 ]; then
+  echo "FAIL: cut-auto proposed '$proposed' cuts on the hand (at least 10 expected)" >&2
+  exit 1
+fi
+if ! grep -q "label [0-9]*: .* type " "$out/cut.log" || ! grep -q "part types" "$out/cut.log"; then
+  echo "FAIL: the part types were not listed or nothing was learned" >&2
   exit 1
 fi
 
