@@ -76,7 +76,7 @@ Returns {"labels": m int32, "cuts": [{"vertex", "path", "length",
     py::list joints;
     for(const Proposed_joint& j : proposal.joints)
       joints.append(py::dict(py::arg("vertex") = j.vertex, py::arg("limb") = j.limb, py::arg("at_base") = j.at_base,
-                             py::arg("strength") = j.strength));
+                             py::arg("strength") = j.strength, py::arg("by_analogy") = j.by_analogy));
     py::dict r = cutting_dict(std::move(proposal.cutting));
     r["limbs"] = proposal.limbs;
     r["joints"] = joints;
@@ -88,7 +88,7 @@ Limbs are the long branches of CGAL's curve skeleton thinner than the body;
 each is cut where it leaves the body and where it narrows, creases or bends
 more than the sensitivity (0 to 1; 0: bases only) allows.
 Returns the dict of cut_at_vertices with "limbs" (limbs found) and "joints"
-([{"vertex", "limb", "at_base", "strength"}], one per proposal).)doc");
+([{"vertex", "limb", "at_base", "strength", "by_analogy"}], one per proposal).)doc");
 }
 
 } // namespace mpm_python

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace CGAL {
 namespace MPM {
@@ -329,6 +330,111 @@ std::vector<std::pair<double, int>> joints_along(const std::vector<Station>& sta
   return chosen;
 }
 
+// A joint along a limb: its station and how clearly it shows.
+struct Limb_joint
+{
+  int station = -1;
+  double strength = 0.;
+  bool by_analogy = false;
+};
+
+// A limb's sections from its base (arc 0) outwards and the joints found.
+struct Limb_profile
+{
+  int limb = -1;
+  double radius = 0., spacing = 0.;
+  double length = 0.; // from the base to the end of the limb's skeleton branch
+  int base_vertex = -1; // -1: not a limb after all
+  std::vector<Station> stations;
+  std::vector<Limb_joint> joints;
+};
+
+Limb_profile limb_profile(const Skeleton_branches& branches, const Chain& limb, const Joint_proposal_options& options)
+{
+  Limb_profile p;
+  p.radius = branches.radius(limb);
+  p.spacing = options.minimum_segment_length * p.radius;
+  const std::vector<Station> stations = branches.stations(limb, p.radius, 0.5 * p.spacing);
+  const double end = branches.length(limb);
+  // A limb is a tube for at least its minimum length: sections across a
+  // branch to the corner of a box-like body close around it only near its end.
+  if(stations.empty() || end - stations.front().arc < options.minimum_limb_length * p.radius) return p;
+  // The base: the narrowest, most concave section within a limb radius of
+  // where sections first close around the limb alone.
+  std::size_t base = 0;
+  for(std::size_t i = 0; i < stations.size() && stations[i].arc <= stations.front().arc + p.radius; ++i)
+    if(stations[i].weighted < stations[base].weighted) base = i;
+  p.base_vertex = stations[base].vertex;
+  p.stations.assign(stations.begin() + std::ptrdiff_t(base), stations.end());
+  const double from = p.stations.front().arc;
+  for(Station& s : p.stations) s.arc -= from;
+  p.length = end - from;
+  return p;
+}
+
+// Adds a joint by analogy at the best section within half a spacing of
+// `fraction` of the limb's length, if one keeps the spacing to the others.
+void add_joint_near(Limb_profile& p, double fraction)
+{
+  const double target = fraction * p.length;
+  int best = -1;
+  for(std::size_t i = 0; i < p.stations.size(); ++i)
+    if(std::abs(p.stations[i].arc - target) <= 0.5 * p.spacing &&
+       (best < 0 || p.stations[i].weighted < p.stations[std::size_t(best)].weighted))
+      best = int(i);
+  if(best < 0) return;
+  const double arc = p.stations[std::size_t(best)].arc;
+  if(arc < p.spacing || p.length - arc < 0.5 * p.spacing) return;
+  for(const Limb_joint& j : p.joints)
+    if(std::abs(p.stations[std::size_t(j.station)].arc - arc) < p.spacing) return;
+  p.joints.push_back({best, 0., true});
+}
+
+// Limbs that look alike (radius and length within a factor 1.5) are cut
+// alike: a joint found at about the same fraction of the length (within
+// 0.1) on at least two of them and a third of the group is added, at the
+// best section near that fraction, to the ones of the group where nothing
+// showed there (a straight finger whose neighbour is bent; an arm whose
+// narrowing is too faint).
+void add_joints_by_analogy(std::vector<Limb_profile>& profiles)
+{
+  auto similar = [](const Limb_profile& a, const Limb_profile& b) {
+    return std::max(a.radius, b.radius) <= 1.5 * std::min(a.radius, b.radius) &&
+           std::max(a.length, b.length) <= 1.5 * std::min(a.length, b.length);
+  };
+  std::vector<std::size_t> group(profiles.size());
+  for(std::size_t i = 0; i < profiles.size(); ++i) {
+    group[i] = i;
+    for(std::size_t j = 0; j < i && group[i] == i; ++j)
+      if(similar(profiles[i], profiles[j])) group[i] = group[j];
+  }
+  for(std::size_t g = 0; g < profiles.size(); ++g) {
+    std::vector<std::size_t> members;
+    for(std::size_t i = 0; i < profiles.size(); ++i)
+      if(group[i] == g) members.push_back(i);
+    if(members.size() < 2) continue;
+    std::vector<std::pair<double, std::size_t>> found; // (fraction of the length, member)
+    for(std::size_t i : members)
+      for(const Limb_joint& j : profiles[i].joints)
+        found.emplace_back(profiles[i].stations[std::size_t(j.station)].arc / profiles[i].length, i);
+    std::sort(found.begin(), found.end());
+    for(std::size_t a = 0; a < found.size();) {
+      std::size_t b = a + 1;
+      while(b < found.size() && found[b].first - found[b - 1].first <= 0.1) ++b;
+      std::set<std::size_t> limbs;
+      double sum = 0.;
+      for(std::size_t k = a; k < b; ++k) {
+        limbs.insert(found[k].second);
+        sum += found[k].first;
+      }
+      if(limbs.size() >= 2 && 3 * limbs.size() >= members.size())
+        for(std::size_t i : members)
+          if(!limbs.count(i)) add_joint_near(profiles[i], sum / double(b - a));
+      a = b;
+    }
+  }
+}
+
 void check_options(const Joint_proposal_options& o)
 {
   auto bad = [](const std::string& name, const std::string& problem) {
@@ -357,24 +463,20 @@ Joint_proposal cut_at_proposed_joints(const Indexed_mesh& mesh, const Joint_prop
 
   Joint_proposal proposal;
   proposal.limbs = int(limbs.size());
+  std::vector<Limb_profile> profiles;
   for(std::size_t l = 0; l < limbs.size(); ++l) {
-    const double radius = branches.radius(limbs[l]), spacing = options.minimum_segment_length * radius;
-    const std::vector<Station> stations = branches.stations(limbs[l], radius, 0.5 * spacing);
-    const double end = branches.length(limbs[l]);
-    // A limb is a tube for at least its minimum length: sections across a
-    // branch to the corner of a box-like body close around it only near its end.
-    if(stations.empty() || end - stations.front().arc < options.minimum_limb_length * radius) continue;
-    // The base: the narrowest, most concave section within a limb radius of
-    // where sections first close around the limb alone.
-    std::size_t base = 0;
-    for(std::size_t i = 0; i < stations.size() && stations[i].arc <= stations.front().arc + radius; ++i)
-      if(stations[i].weighted < stations[base].weighted) base = i;
-    proposal.joints.push_back({stations[base].vertex, int(l), true, 0.});
-    std::vector<Station> beyond(stations.begin() + std::ptrdiff_t(base), stations.end());
-    const double from = beyond.front().arc;
-    for(Station& s : beyond) s.arc -= from;
-    for(const auto& [strength, i] : joints_along(beyond, spacing, thresholds, {0.}, end - from))
-      proposal.joints.push_back({beyond[std::size_t(i)].vertex, int(l), false, strength});
+    Limb_profile p = limb_profile(branches, limbs[l], options);
+    if(p.base_vertex < 0) continue;
+    p.limb = int(l);
+    for(const auto& [strength, i] : joints_along(p.stations, p.spacing, thresholds, {0.}, p.length))
+      p.joints.push_back({i, strength, false});
+    profiles.push_back(std::move(p));
+  }
+  if(options.sensitivity > 0) add_joints_by_analogy(profiles);
+  for(const Limb_profile& p : profiles) {
+    proposal.joints.push_back({p.base_vertex, p.limb, true, 0.});
+    for(const Limb_joint& j : p.joints)
+      proposal.joints.push_back({p.stations[std::size_t(j.station)].vertex, p.limb, false, j.strength, j.by_analogy});
   }
   const Chain body = branches.body_axis(limbs);
   if(body.size() > 1) {

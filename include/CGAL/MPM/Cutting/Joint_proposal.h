@@ -39,6 +39,7 @@ struct Proposed_joint
   int limb = -1;         ///< the limb it is on (0, 1, ...), or -1 for the body's own axis
   bool at_base = false;  ///< where the limb leaves the body
   double strength = 0.;  ///< how clearly it shows, narrowing and bend together (1: just at the sensitivity's threshold; 0 at a base)
+  bool by_analogy = false; ///< placed like the joints found on similar limbs, where nothing showed on this one
 };
 
 /// \ingroup PkgMPMRef
@@ -60,9 +61,12 @@ struct Joint_proposal
 /// sections first close around the limb alone, and further joints are where
 /// a section stands out from its surroundings, or the limb's axis bends, by
 /// more than the sensitivity allows, at least
-/// `minimum_segment_length` limb radii apart. The same along the body's own
-/// axis where no limb leaves it. Each proposal is then cut as one click
-/// (`cut_at_vertices()`).
+/// `minimum_segment_length` limb radii apart. Limbs that look alike (radius
+/// and length within a factor 1.5) are cut alike: a joint found at about the
+/// same fraction of the length on at least two of them and a third of them
+/// is added to the others (`Proposed_joint::by_analogy`). The body's own
+/// axis is cut only at a pronounced waist. Each proposal is then cut as one
+/// click (`cut_at_vertices()`).
 ///
 /// Throws `Input_error` naming the mesh for options out of range, a mesh with
 /// holes or several components, or one whose skeleton cannot be computed.
