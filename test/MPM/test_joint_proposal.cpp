@@ -15,6 +15,7 @@
 #include "Learned_models.h"
 #include "Tool_test_support.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -62,6 +63,19 @@ TEST(Joint_proposal, SyntheticHandIsCutAtItsJoints)
   const Joint_proposal b = cut_at_proposed_joints(m, bases);
   for(const Proposed_joint& j : b.joints) EXPECT_TRUE(j.at_base);
   EXPECT_EQ(int(b.joints.size()), b.limbs);
+}
+
+// The same hand turned, scaled by 37 and moved: the proposal does not
+// depend on where the mesh lies or on its units.
+TEST(Joint_proposal, TurnedAndScaledHandIsCutAlike)
+{
+  Labeled_mesh hand = mpm_test::learned(Synthetic_family::hand, 3000).truth.mesh;
+  const Eigen::Matrix3d turn =
+    (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1., 2., 3.).normalized())).toRotationMatrix();
+  hand.mesh.points = (37. * hand.mesh.points * turn.transpose()).rowwise() + Eigen::RowVector3d(5., -3., 2.);
+  const Joint_proposal p = cut_at_proposed_joints(hand.mesh);
+  EXPECT_GE(p.limbs, 5);
+  EXPECT_GE(seams_found(hand, p, 0.005 * diagonal(hand.mesh)), 12) << "of 15";
 }
 
 // The synthetic spider: eight legs, and most seams found.
