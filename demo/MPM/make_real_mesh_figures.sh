@@ -5,7 +5,11 @@
 # Writes the manual's pictures of a real segmented hand (doc/MPM/fig/real_*.png)
 # with the demo's batch mode: the PSB hand 181 learned with proposed part
 # types, symmetrized, exaggerated, with one more thumb segment, and dragged by
-# a finger tip next to CGAL's ARAP on the same handles.
+# a finger tip next to CGAL's ARAP on the same handles; and the pictures of
+# doc/MPM/Cutting.md and Demo.md: joints proposed automatically (mpm cut
+# --auto) next to the human segmentation on three PSB meshes
+# (fig/auto_cut_*.png, fig/human_cut_*.png), and the demo's window cutting a
+# raw hand (fig/demo_cutting.png).
 #
 # usage: demo/MPM/make_real_mesh_figures.sh [PSB_DIR [MPM_DEMO [MPM]]]
 #   (defaults: ../shared/data/psb, build/demo/MPM/mpm_demo, build/src/mpm)
@@ -44,6 +48,25 @@ arap off
 reset
 insert 14
 screenshot $fig/real_hand_insert.png
+size 480 360
+view 0 0
+SCRIPT
+for mesh in hand_190 ant_81 octopus_137; do
+  "$mpm" cut "$psb/$mesh.off" --auto -o "$work/$mesh" > /dev/null
+  cat >> "$work/script.txt" <<SCRIPT
+load $work/$mesh.off $work/$mesh.seg
+seams on
+screenshot $fig/auto_cut_$mesh.png
+load $psb/$mesh.off $psb/$mesh.seg
+seams on
+screenshot $fig/human_cut_$mesh.png
+SCRIPT
+done
+cat >> "$work/script.txt" <<SCRIPT
+window-size 1100 640
+open $psb/hand_190.off
+cut-auto
+screenshot-window $fig/demo_cutting.png
 SCRIPT
 
 if [ -z "${DISPLAY:-}" ]; then

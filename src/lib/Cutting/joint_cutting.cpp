@@ -42,10 +42,8 @@ std::vector<int> anchors(const Indexed_mesh& m, const std::vector<int>& loop, in
   return r;
 }
 
-} // namespace
-
-Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices,
-                                     const Joint_cutting_options& options, const std::string& mesh_source)
+// Every clicked vertex exists and lies on a face.
+void check_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices, const std::string& source)
 {
   std::vector<bool> in_face(std::size_t(mesh.number_of_vertices()), false);
   for(const Triangle& t : mesh.triangles)
@@ -53,10 +51,19 @@ Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector
       if(v >= 0 && v < mesh.number_of_vertices()) in_face[std::size_t(v)] = true;
   for(int v : vertices) {
     if(v < 0 || v >= mesh.number_of_vertices())
-      throw Input_error(mesh_source, vertex_name(v),
+      throw Input_error(source, vertex_name(v),
                         "is out of range (the mesh has " + std::to_string(mesh.number_of_vertices()) + " vertices)");
-    if(!in_face[std::size_t(v)]) throw Input_error(mesh_source, vertex_name(v), "belongs to no face");
+    if(!in_face[std::size_t(v)]) throw Input_error(source, vertex_name(v), "belongs to no face");
   }
+}
+
+} // namespace
+
+Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices,
+                                     const Joint_cutting_options& options, const std::string& mesh_source)
+{
+  // Checked before the skeleton is computed, so that a bad click fails at once.
+  check_vertices(mesh, vertices, mesh_source);
   return Joint_cutter(mesh, options, mesh_source).cut(vertices);
 }
 
@@ -72,17 +79,7 @@ Joint_cutter::~Joint_cutter() = default;
 
 Joint_cutting_result Joint_cutter::cut(const std::vector<int>& vertices) const
 {
-  const Indexed_mesh& mesh = finder_->mesh();
-  std::vector<bool> in_face(std::size_t(mesh.number_of_vertices()), false);
-  for(const Triangle& t : mesh.triangles)
-    for(int v : t)
-      if(v >= 0 && v < mesh.number_of_vertices()) in_face[std::size_t(v)] = true;
-  for(int v : vertices) {
-    if(v < 0 || v >= mesh.number_of_vertices())
-      throw Input_error(finder_->source(), vertex_name(v),
-                        "is out of range (the mesh has " + std::to_string(mesh.number_of_vertices()) + " vertices)");
-    if(!in_face[std::size_t(v)]) throw Input_error(finder_->source(), vertex_name(v), "belongs to no face");
-  }
+  check_vertices(finder_->mesh(), vertices, finder_->source());
   return internal::cut_at_vertices(*finder_, vertices, options_);
 }
 
