@@ -91,8 +91,8 @@ struct Joint_cutting_result
 /// by `cut_mesh()`; two vertices on one joint (the centres of their sections
 /// lie within a limb radius). Also for a mesh with holes or several
 /// components, and as `cut_mesh()` when the cuts together do not separate the
-/// mesh. The curve skeleton, and so a few cuts, can vary from run to run:
-/// CGAL's skeletonization depends on where its mesh lies in memory.
+/// mesh. The result is the same on every run (the skeletonization's own
+/// mesh is allocated in a fixed order, see doc/MPM/Cutting.md).
 Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices,
                                      const Joint_cutting_options& options = Joint_cutting_options(),
                                      const std::string& mesh_source = "mesh");
