@@ -496,14 +496,31 @@ int Session::parent_edge(int node) const
   return reached_by[node];
 }
 
+void Session::show_edited_graph(MPM::Part_graph&& graph)
+{
+  // An assembly that fails leaves the graph shown before, not the failed one.
+  MPM::Part_graph previous = std::move(edit_graph_);
+  const bool was_edited = graph_edited_;
+  edit_graph_ = std::move(graph);
+  graph_edited_ = true;
+  try
+  {
+    rebuild();
+  }
+  catch(...)
+  {
+    edit_graph_ = std::move(previous);
+    graph_edited_ = was_edited;
+    throw;
+  }
+}
+
 int Session::insert_segment(int node)
 {
   MPM::Part_graph graph = edit_graph_;
   const int added = MPM::insert_segment(model_, graph, parent_edge(node));
   MPM::choose_segment_shape(model_, graph, added);
-  edit_graph_ = std::move(graph);
-  graph_edited_ = true;
-  rebuild();
+  show_edited_graph(std::move(graph));
   return added;
 }
 
@@ -511,18 +528,14 @@ void Session::remove_segment(int node)
 {
   MPM::Part_graph graph = edit_graph_;
   MPM::remove_segment(model_, graph, node);
-  edit_graph_ = std::move(graph);
-  graph_edited_ = true;
-  rebuild();
+  show_edited_graph(std::move(graph));
 }
 
 void Session::remove_branch(int node)
 {
   MPM::Part_graph graph = edit_graph_;
   MPM::remove_branch(model_, graph, node, MPM::root_node(graph));
-  edit_graph_ = std::move(graph);
-  graph_edited_ = true;
-  rebuild();
+  show_edited_graph(std::move(graph));
 }
 
 int Session::duplicate_branch(int node)
@@ -541,9 +554,7 @@ int Session::duplicate_branch(int node)
     try
     {
       const int copy = MPM::duplicate_branch(model_, graph, node, r, target);
-      edit_graph_ = std::move(graph);
-      graph_edited_ = true;
-      rebuild();
+      show_edited_graph(std::move(graph));
       return copy;
     }
     catch(const MPM::Input_error& e)

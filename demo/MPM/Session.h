@@ -185,6 +185,8 @@ private:
   void start_new_scene();
   void require_model(const std::string& what) const;
   void rebuild();
+  /// Shows `graph` assembled; when that fails, keeps the graph shown before and rethrows.
+  void show_edited_graph(CGAL::MPM::Part_graph&& graph);
   void set_scene(const CGAL::MPM::Indexed_mesh& rest, const CGAL::MPM::Part_graph& graph,
                  std::vector<int> face_nodes);
   /// Handles from the library's choosers, each in its own group.
