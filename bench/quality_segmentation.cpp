@@ -12,6 +12,7 @@
 #include <CGAL/MPM/Cutting/Joint_proposal.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/Cutting/Segmentation_measures.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include <algorithm>
 #include <chrono>
@@ -54,7 +55,7 @@ void evaluate(const std::string& name, const std::string& base, double search_ra
   const Joint_cutting_result result = cut_at_vertices(m, clicks, options, base + ".off");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const double diagonal = (m.points.colwise().maxCoeff() - m.points.colwise().minCoeff()).norm();
+  const double diagonal = internal::bounding_box_diagonal(m.points);
   double sum = 0., worst = 0.;
   int within = 0;
   for(const Joint_cut& c : result.cuts) {
@@ -88,7 +89,7 @@ void evaluate_proposal(const std::string& name, const std::string& base, double 
   const auto start = std::chrono::steady_clock::now();
   const Joint_proposal proposal = cut_at_proposed_joints(m, options, base + ".off");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double diagonal = (m.points.colwise().maxCoeff() - m.points.colwise().minCoeff()).norm();
+  const double diagonal = internal::bounding_box_diagonal(m.points);
   std::vector<char> matched_cut(proposal.cutting.cuts.size(), 0);
   int matched_human = 0;
   for(const Segmentation_cut& h : cuts) {

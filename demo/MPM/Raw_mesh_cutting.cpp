@@ -29,8 +29,14 @@ const MPM::Joint_cutter& Raw_mesh_cutting::cutter()
 void Raw_mesh_cutting::recut(const std::vector<int>& clicks)
 {
   MPM::Joint_cutting_result result = cutter().cut(clicks);
-  labels_ = std::move(result.mesh.face_labels);
-  cuts_ = std::move(result.cuts);
+  replace_cuts(std::move(result.mesh.face_labels), std::move(result.cuts));
+}
+
+void Raw_mesh_cutting::replace_cuts(std::vector<int>&& labels, std::vector<MPM::Joint_cut>&& cuts)
+{
+  labels_ = std::move(labels);
+  cuts_ = std::move(cuts);
+  // Types and their corrections belong to the segmentation they were made for.
   types_.reset();
   corrections_.clear();
 }
@@ -60,12 +66,9 @@ int Raw_mesh_cutting::remove_cut_near(int vertex)
   std::vector<int> clicks;
   for(std::size_t i = 0; i < cuts_.size(); ++i)
     if(i != nearest) clicks.push_back(cuts_[i].vertex);
-  if(clicks.empty()) {
-    labels_.assign(mesh_.triangles.size(), 0);
-    cuts_.clear();
-    types_.reset();
-    corrections_.clear();
-  } else
+  if(clicks.empty())
+    replace_cuts(std::vector<int>(mesh_.triangles.size(), 0), {});
+  else
     recut(clicks);
   return removed;
 }
@@ -75,10 +78,7 @@ int Raw_mesh_cutting::propose(double sensitivity)
   MPM::Joint_proposal_options options;
   options.sensitivity = sensitivity;
   MPM::Joint_proposal proposal = MPM::cut_at_proposed_joints(mesh_, options, path_);
-  labels_ = std::move(proposal.cutting.mesh.face_labels);
-  cuts_ = std::move(proposal.cutting.cuts);
-  types_.reset();
-  corrections_.clear();
+  replace_cuts(std::move(proposal.cutting.mesh.face_labels), std::move(proposal.cutting.cuts));
   return proposal.limbs;
 }
 

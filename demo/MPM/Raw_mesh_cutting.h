@@ -49,6 +49,7 @@ public:
 
 private:
   void recut(const std::vector<int>& clicks);
+  void replace_cuts(std::vector<int>&& labels, std::vector<CGAL::MPM::Joint_cut>&& cuts);
   const CGAL::MPM::Joint_cutter& cutter();
 
   std::string path_;

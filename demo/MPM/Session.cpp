@@ -142,42 +142,44 @@ void Session::start_new_scene()
 
 const MPM::Joint_cut& Session::add_cut(int vertex)
 {
-  if(!cutting_) throw MPM::Input_error("demo", "cut", "open a mesh to cut first");
-  const MPM::Joint_cut& cut = cutting_->add_cut(vertex);
+  const MPM::Joint_cut& cut = require_cutting("cut").add_cut(vertex);
   show_cutting();
   return cut;
 }
 
 int Session::remove_cut_near(int vertex)
 {
-  if(!cutting_) throw MPM::Input_error("demo", "cut", "open a mesh to cut first");
-  const int removed = cutting_->remove_cut_near(vertex);
+  const int removed = require_cutting("cut").remove_cut_near(vertex);
   show_cutting();
   return removed;
 }
 
 int Session::propose_cuts(double sensitivity)
 {
-  if(!cutting_) throw MPM::Input_error("demo", "cut", "open a mesh to cut first");
-  const int limbs = cutting_->propose(sensitivity);
+  const int limbs = require_cutting("cut").propose(sensitivity);
   show_cutting();
   return limbs;
 }
 
 void Session::set_part_type(int label, const std::string& type)
 {
-  if(!cutting_) throw MPM::Input_error("demo", "part type", "open a mesh to cut first");
-  cutting_->set_part_type(label, type);
+  require_cutting("part type").set_part_type(label, type);
 }
 
 void Session::learn_from_cuts()
 {
-  if(!cutting_) throw MPM::Input_error("demo", "learn", "open a mesh to cut first");
+  require_cutting("learn");
   if(cutting_->cuts().empty()) throw MPM::Input_error(cutting_->path(), "cuts", "none yet: cut the mesh first");
   const MPM::Labeled_mesh labeled = cutting_->labeled_mesh();
   MPM::validate_labeled_mesh(labeled);
   adopt_model(MPM::learn_morphable_part_model(labeled, cutting_->part_types().annotation),
               QString::fromStdString(cutting_->path()));
+}
+
+Raw_mesh_cutting& Session::require_cutting(const std::string& what)
+{
+  if(!cutting_) throw MPM::Input_error("demo", what, "open a mesh to cut first");
+  return *cutting_;
 }
 
 void Session::require_model(const std::string& what) const

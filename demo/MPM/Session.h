@@ -184,6 +184,8 @@ private:
   /// No handles, the rest positions shown, `scene_changed()` emitted.
   void start_new_scene();
   void require_model(const std::string& what) const;
+  /// The mesh being cut; throws `Input_error` naming `what` when there is none.
+  Raw_mesh_cutting& require_cutting(const std::string& what);
   void rebuild();
   /// Shows `graph` assembled; when that fails, keeps the graph shown before and rethrows.
   void show_edited_graph(CGAL::MPM::Part_graph&& graph);

@@ -9,6 +9,7 @@
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/Cutting/Segmentation_measures.h>
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include "Io_test_support.h"
 #include "Learned_models.h"
@@ -223,7 +224,7 @@ TEST(Joint_cutting, OneClickPerHumanCutOfAnAnt)
   ASSERT_GE(cuts.size(), 20u);
   const Joint_cutting_result result = cut_at_vertices(m, clicks, Joint_cutting_options(), base + ".off");
   ASSERT_EQ(result.cuts.size(), cuts.size());
-  const double diag = (m.points.colwise().maxCoeff() - m.points.colwise().minCoeff()).norm();
+  const double diag = internal::bounding_box_diagonal(m.points);
   double sum = 0.;
   for(std::size_t i = 0; i < cuts.size(); ++i) {
     const double d = cut_distance(m, result.cuts[i].path, cuts[i]);

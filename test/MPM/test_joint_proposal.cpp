@@ -10,6 +10,7 @@
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/Cutting/Segmentation_measures.h>
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 
 #include "Io_test_support.h"
 #include "Learned_models.h"
@@ -28,7 +29,7 @@ namespace {
 
 using namespace CGAL::MPM;
 
-double diagonal(const Indexed_mesh& m) { return (m.points.colwise().maxCoeff() - m.points.colwise().minCoeff()).norm(); }
+double diagonal(const Indexed_mesh& m) { return internal::bounding_box_diagonal(m.points); }
 
 // True seams with a proposed cut within `tolerance` of them.
 int seams_found(const Labeled_mesh& truth, const Joint_proposal& p, double tolerance)

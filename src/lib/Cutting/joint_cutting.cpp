@@ -15,16 +15,6 @@ namespace {
 
 std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
 
-void check_options(const Joint_cutting_options& o)
-{
-  auto bad = [](const std::string& name, const std::string& problem) {
-    throw Input_error("joint cutting options", name, problem);
-  };
-  if(!(o.feature_weight >= 0) || !std::isfinite(o.feature_weight)) bad("feature_weight", "must be finite and >= 0");
-  if(!(o.search_range >= 0) || !std::isfinite(o.search_range)) bad("search_range", "must be finite and >= 0");
-  if(o.anchors < 3) bad("anchors", "must be at least 3");
-  if(o.minimum_section_vertices < 3) bad("minimum_section_vertices", "must be at least 3");
-}
 
 // `count` vertices of the loop spread evenly along its length.
 std::vector<int> anchors(const Indexed_mesh& m, const std::vector<int>& loop, int count)
@@ -69,10 +59,8 @@ Joint_cutting_result cut_at_vertices(const Indexed_mesh& mesh, const std::vector
 
 Joint_cutter::Joint_cutter(const Indexed_mesh& mesh, const Joint_cutting_options& options,
                            const std::string& mesh_source)
-  : options_(options)
+  : finder_(std::make_unique<internal::Joint_finder>(mesh, options, mesh_source))
 {
-  check_options(options);
-  finder_ = std::make_unique<internal::Joint_finder>(mesh, options, mesh_source);
 }
 
 Joint_cutter::~Joint_cutter() = default;
@@ -80,15 +68,14 @@ Joint_cutter::~Joint_cutter() = default;
 Joint_cutting_result Joint_cutter::cut(const std::vector<int>& vertices) const
 {
   check_vertices(finder_->mesh(), vertices, finder_->source());
-  return internal::cut_at_vertices(*finder_, vertices, options_);
+  return internal::cut_at_vertices(*finder_, vertices);
 }
 
 namespace internal {
 
-Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vector<int>& vertices,
-                                     const Joint_cutting_options& options)
+Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vector<int>& vertices)
 {
-  check_options(options);
+  const Joint_cutting_options& options = finder.options();
   const Indexed_mesh& mesh = finder.mesh();
   const std::string& mesh_source = finder.source();
   Joint_cutting_result result;

@@ -28,10 +28,23 @@ double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, c
   return (p - (a + t * (b - a))).norm();
 }
 
+// Checked first, before the mesh is copied and its skeleton computed.
+const Joint_cutting_options& checked(const Joint_cutting_options& o)
+{
+  auto bad = [](const std::string& name, const std::string& problem) {
+    throw Input_error("joint cutting options", name, problem);
+  };
+  if(!(o.feature_weight >= 0) || !std::isfinite(o.feature_weight)) bad("feature_weight", "must be finite and >= 0");
+  if(!(o.search_range >= 0) || !std::isfinite(o.search_range)) bad("search_range", "must be finite and >= 0");
+  if(o.anchors < 3) bad("anchors", "must be at least 3");
+  if(o.minimum_section_vertices < 3) bad("minimum_section_vertices", "must be at least 3");
+  return o;
+}
+
 } // namespace
 
 Joint_finder::Joint_finder(const Indexed_mesh& m, const Joint_cutting_options& options, const std::string& source)
-  : m_(m), options_(options), source_(source), surface_(to_surface_mesh(m, source, "joint cutting"))
+  : m_(m), options_(checked(options)), source_(source), surface_(to_surface_mesh(m, source, "joint cutting"))
 {
   check_closed_and_connected();
   skeleton_ = curve_skeleton(m, source);

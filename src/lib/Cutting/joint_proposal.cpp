@@ -24,6 +24,14 @@ using internal::Section;
 // end) outwards.
 using Chain = std::vector<int>;
 
+// The middle value (the upper one of an even count); 0 for none.
+double median(std::vector<double> values)
+{
+  if(values.empty()) return 0.;
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
+
 // A section across a chain at one of its nodes.
 struct Station
 {
@@ -98,9 +106,7 @@ public:
     std::vector<double> r;
     for(std::size_t i = c.size() / 3; i < c.size(); ++i)
       if(radius_[std::size_t(c[i])] > 0) r.push_back(radius_[std::size_t(c[i])]);
-    if(r.empty()) return 0.;
-    std::nth_element(r.begin(), r.begin() + std::ptrdiff_t(r.size() / 2), r.end());
-    return r[r.size() / 2];
+    return median(std::move(r));
   }
 
   // Leaf chains ending at a junction, shorter than `factor` radii, are bumps:
@@ -141,10 +147,10 @@ public:
     for(std::size_t n = 0; n < body.size(); ++n)
       if(body[n] && radius_[n] > 0) r.push_back(radius_[n]);
     if(r.empty()) return branches;
-    std::nth_element(r.begin(), r.begin() + std::ptrdiff_t(r.size() / 2), r.end());
+    const double body_radius = median(std::move(r));
     std::vector<Chain> thin;
     for(const Chain& c : branches)
-      if(radius(c) <= factor * r[r.size() / 2]) thin.push_back(c);
+      if(radius(c) <= factor * body_radius) thin.push_back(c);
     return thin;
   }
 
@@ -472,7 +478,7 @@ Joint_proposal cut_at_proposed_joints(const Indexed_mesh& mesh, const Joint_prop
       p.joints.push_back({i, strength, false});
     profiles.push_back(std::move(p));
   }
-  if(options.sensitivity > 0) add_joints_by_analogy(profiles);
+  add_joints_by_analogy(profiles);
   for(const Limb_profile& p : profiles) {
     proposal.joints.push_back({p.base_vertex, p.limb, true, 0.});
     for(const Limb_joint& j : p.joints)
@@ -488,7 +494,7 @@ Joint_proposal cut_at_proposed_joints(const Indexed_mesh& mesh, const Joint_prop
   }
   std::vector<int> vertices;
   for(const Proposed_joint& j : proposal.joints) vertices.push_back(j.vertex);
-  proposal.cutting = internal::cut_at_vertices(finder, vertices, cutting);
+  proposal.cutting = internal::cut_at_vertices(finder, vertices);
   return proposal;
 }
 

@@ -119,7 +119,6 @@ public:
 
 private:
   std::unique_ptr<internal::Joint_finder> finder_;
-  Joint_cutting_options options_;
 };
 
 } // namespace MPM

@@ -82,6 +82,7 @@ public:
   const std::vector<double>& edge_radius() const { return edge_radius_; }
   const Indexed_mesh& mesh() const { return m_; }
   const std::string& source() const { return source_; }
+  const Joint_cutting_options& options() const { return options_; }
 
 private:
   void check_closed_and_connected() const;
@@ -105,9 +106,8 @@ private:
   std::vector<double> weight_; // crease weights at feature weight 1, for ranking sections
 };
 
-// `cut_at_vertices()` with the finder of its mesh already built.
-Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vector<int>& vertices,
-                                     const Joint_cutting_options& options);
+// `cut_at_vertices()` with the finder of its mesh (and its options) already built.
+Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vector<int>& vertices);
 
 } // namespace internal
 } // namespace MPM
