@@ -232,6 +232,7 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
     if(i > 0)
     {
       unfold(*surfaces[i], info, landmarks[i], result.triangles, positions[i]);
+      unfold_in_chart(*surfaces[i], info, landmarks[i], result.triangles, positions[i]);
       cover_missed_points(*surfaces[i], info, landmarks[i], result.triangles, positions[i]);
     }
     result.segments[i].positions = positions[i];

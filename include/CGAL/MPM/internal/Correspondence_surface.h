@@ -8,7 +8,7 @@
 // (correspondence_surface.cpp), landmark matching
 // (correspondence_landmarks.cpp), the ICP fits and the refinement of eq.
 // 4.1 (correspondence_fitting.cpp), and the repairs of folds and missed
-// extremities (correspondence_repair.cpp).
+// extremities (correspondence_repair.cpp, correspondence_chart.cpp).
 
 #include <CGAL/MPM/Correspondence/Dense_correspondence.h>
 #include <CGAL/MPM/Indexed_mesh.h>
@@ -220,6 +220,10 @@ double coverage_residual(const Surface& s, const Point_matrix& y, const std::vec
 std::vector<int> flipped_faces(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles);
 void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, const std::vector<Triangle>& triangles,
             Point_matrix& y);
+// The repair of correspondence_chart.cpp: folds unfold() leaves, opened in
+// a chart of a segment with one or two loops.
+void unfold_in_chart(const Surface& s, const Template_info& info, const Landmarks& lm,
+                     const std::vector<Triangle>& triangles, Point_matrix& y);
 void cover_missed_points(const Surface& s, const Template_info& info, const Landmarks& lm,
                          const std::vector<Triangle>& triangles, Point_matrix& y);
 
