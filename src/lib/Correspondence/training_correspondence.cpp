@@ -132,6 +132,12 @@ bool has_interior_vertex(const std::vector<Triangle>& triangles)
 // did not find the segment: on the real hands a good fit stays under 1%, a
 // thumb base matched to the other proximal phalanges' template is at 11%.
 constexpr double max_correspondence_residual = 0.03;
+// Fraction of the template's triangles facing against the segment (after
+// the repairs of folds) above which the template is laid wrongly on it: a
+// fold covers a few percent at most; octopus_124's thin arms, covered to
+// 1% by a template twisted around them, had 40% turned, and their learned
+// example 800 self-intersecting face pairs.
+constexpr double max_flipped_fraction = 0.1;
 
 // Segments whose correspondence failed, ascending. When most failed, the
 // template is the odd one out (a thumb base among proximal phalanges).
@@ -139,7 +145,9 @@ std::vector<std::size_t> failed_segments(const Dense_correspondence& c)
 {
   std::vector<std::size_t> failed;
   for(std::size_t i = 1; i < c.segments.size(); ++i)
-    if(c.segments[i].residual > max_correspondence_residual) failed.push_back(i);
+    if(c.segments[i].residual > max_correspondence_residual ||
+       c.segments[i].flipped_faces > max_flipped_fraction * double(c.triangles.size()))
+      failed.push_back(i);
   if(2 * failed.size() > c.segments.size() - 1) return {0};
   return failed;
 }
@@ -272,7 +280,7 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       if(!failed.empty())
       {
         give_own_types(failed, failed.front() == 0 ? "as the template, it covers most of the type's other segments poorly"
-                                                   : "the type's template covers it poorly (coverage residual over 3% of its diagonal)");
+                                                   : "the type's template covers it poorly (coverage residual over 3% of its diagonal, or over 10% of the template's triangles turned against it)");
         retry = true;
         continue;
       }

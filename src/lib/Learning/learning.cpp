@@ -596,7 +596,9 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
   for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
   validate_seam_counts(inputs);
   const Corresponded_training corresponded = correspond_training_inputs(inputs, options);
-  return corresponded.types.empty() ? learn_corresponded(inputs, options, nullptr, nullptr)
+  // With no type corresponded, the inputs are the user's, but segments that
+  // could not be corresponded still got types of their own.
+  return corresponded.types.empty() ? learn_corresponded(corresponded.inputs, options, nullptr, nullptr)
                                     : learn_corresponded(corresponded.inputs, options, &corresponded, &inputs);
 }
 
