@@ -79,11 +79,13 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   EXPECT_EQ(rest.border_edges, 0) << name;
   EXPECT_EQ(rest.non_manifold_edges, 0) << name;
   EXPECT_EQ(rest.degenerate_faces, 0) << name;
-  EXPECT_GE(rest.self_intersections, 0) << name;
-  EXPECT_LE(rest.self_intersections, 20) << name; // measured 7-8 (the input has none)
-  // Measured 0.20% (ant_81), 0.34% (hand_181), 0.55% (octopus_137); 0.55-0.69%
-  // before extremities were covered (cover_missed_points()).
-  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.007) << name;
+  // No self-intersection the input (none) does not have: 7-8 pairs before
+  // folds were opened in a chart and a crumpling template avoided.
+  EXPECT_EQ(rest.self_intersections, 0) << name;
+  // Measured 0.20% (ant_81), 0.34% (hand_181), 0.27% (octopus_137; 0.55%
+  // before the coarser template); 0.55-0.69% before extremities were
+  // covered (cover_missed_points()).
+  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.005) << name;
 
   for(int edit = 0; edit < 2; ++edit)
   {
