@@ -4,6 +4,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Model/Shape_space.h>
 #include <CGAL/MPM/internal/Correspondence_surface.h>
+#include <CGAL/MPM/internal/Message_text.h>
 
 #include <cstdio>
 #include <limits>
@@ -13,15 +14,9 @@ namespace CGAL {
 namespace MPM {
 
 using namespace internal::correspondence;
+using internal::percent;
 
 namespace {
-
-std::string percent(double fraction)
-{
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2g%%", 100. * fraction);
-  return text;
-}
 
 std::string mirror_warning(const std::string& element, const std::string& segment, const std::string& template_name,
                            double residual, double mirrored_residual)

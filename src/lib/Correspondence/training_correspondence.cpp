@@ -4,8 +4,10 @@
 // Dense correspondence of the same-type segments of training meshes, and the
 // segments that keep their own shape as types of their own.
 #include <CGAL/MPM/Correspondence/Dense_correspondence.h>
+#include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/internal/Message_text.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
@@ -56,6 +58,7 @@ std::map<int, std::vector<int>> faces_by_label(const Labeled_mesh& lm)
 
 using internal::faces_by_label;
 using internal::label_element;
+using internal::percent;
 using internal::local_part;
 using internal::quoted;
 
@@ -138,17 +141,52 @@ constexpr double max_correspondence_residual = 0.03;
 // 1% by a template twisted around them, had 40% turned, and their learned
 // example 800 self-intersecting face pairs.
 constexpr double max_flipped_fraction = 0.1;
+// Pairs of crossing template triangles, as a fraction of the template's
+// triangles, above which the template crumples on a segment it does not
+// fit (hand_197's thinnest proximal phalanx: 147 pairs of 957 triangles,
+// 15%); fewer are local folds at a seam (a CGAL diplodocus leg: 3).
+constexpr double max_crossing_fraction = 0.02;
 
-// Segments whose correspondence failed, ascending. When most failed, the
-// template is the odd one out (a thumb base among proximal phalanges).
-std::vector<std::size_t> failed_segments(const Dense_correspondence& c)
+// Pairs of intersecting triangles of `mesh` (0 when it is no manifold).
+std::size_t self_intersections_of(const Indexed_mesh& mesh)
 {
-  std::vector<std::size_t> failed;
+  std::vector<std::pair<int, int>> pairs;
+  return self_intersecting_faces(mesh, pairs) ? pairs.size() : 0;
+}
+
+// A segment whose correspondence failed, and why.
+struct Failure
+{
+  std::size_t segment;
+  std::string why;
+};
+
+// Segments whose correspondence failed, ascending: the template covers the
+// segment poorly, lies twisted around it, or crumples on it (many of its
+// triangles cross where the segment's do not: a learned example with such
+// a part intersects itself in every edit). When most failed, the template is the
+// odd one out (a thumb base among proximal phalanges).
+std::vector<Failure> failed_segments(const Dense_correspondence& c, const std::vector<Correspondence_segment>& segments)
+{
+  std::vector<Failure> failed;
   for(std::size_t i = 1; i < c.segments.size(); ++i)
-    if(c.segments[i].residual > max_correspondence_residual ||
-       c.segments[i].flipped_faces > max_flipped_fraction * double(c.triangles.size()))
-      failed.push_back(i);
-  if(2 * failed.size() > c.segments.size() - 1) return {0};
+  {
+    const Segment_correspondence& r = c.segments[i];
+    const std::size_t crossing = self_intersections_of(Indexed_mesh{r.positions, c.triangles}),
+                      own = self_intersections_of(segments[i].mesh);
+    if(r.residual > max_correspondence_residual)
+      failed.push_back({i, "the type's template covers it poorly (coverage residual " + percent(r.residual) +
+                             " of its diagonal, over " + percent(max_correspondence_residual) + ")"});
+    else if(r.flipped_faces > max_flipped_fraction * double(c.triangles.size()))
+      failed.push_back({i, "the type's template lies twisted on it (" + std::to_string(r.flipped_faces) + " of its " +
+                             std::to_string(c.triangles.size()) + " triangles turned against the segment, over " +
+                             percent(max_flipped_fraction) + ")"});
+    else if(double(crossing - std::min(crossing, own)) > max_crossing_fraction * double(c.triangles.size()))
+      failed.push_back({i, "the type's template crumples on it (" + std::to_string(crossing) +
+                             " pairs of its triangles cross, the segment's own " + std::to_string(own) + ")"});
+  }
+  if(2 * failed.size() > c.segments.size() - 1)
+    return {{0, "as the template, it covers most of the type's other segments poorly"}};
   return failed;
 }
 
@@ -281,18 +319,19 @@ Corresponded_training correspond_training_inputs(const std::vector<Training_inpu
       Dense_correspondence c = compute_dense_correspondence(segments, name, co);
       // A segment the template cannot cover keeps its own shape, as a type of
       // its own; the others are put in correspondence again without it.
-      std::vector<std::size_t> failed = failed_segments(c);
+      std::vector<Failure> failed = failed_segments(c, segments);
       // A second template that fails as well: the type's segments are too
       // unlike (long arms in different poses); none is put in correspondence.
-      if(!failed.empty() && failed.front() == 0 && templates_failed++ > 0)
+      if(!failed.empty() && failed.front().segment == 0 && templates_failed++ > 0)
       {
-        failed.resize(refs.size());
-        std::iota(failed.begin(), failed.end(), 0);
+        failed.clear();
+        for(std::size_t i = 0; i < refs.size(); ++i)
+          failed.push_back({i, "no template covers the type's segments well (two tried)"});
       }
       if(!failed.empty())
       {
-        give_own_types(failed, failed.front() == 0 ? "as the template, it covers most of the type's other segments poorly"
-                                                   : "the type's template covers it poorly (coverage residual over 3% of its diagonal, or over 10% of the template's triangles turned against it)");
+        // Highest index first: each leaves `refs`.
+        for(auto it = failed.rbegin(); it != failed.rend(); ++it) give_own_types({it->segment}, it->why);
         retry = true;
         continue;
       }

@@ -7,6 +7,7 @@
 
 #include <CGAL/MPM/Model/Morphable_part_model.h>
 
+#include <cstdio>
 #include <string>
 
 namespace CGAL {
@@ -15,6 +16,14 @@ namespace internal {
 
 // A name in quotes.
 inline std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+
+// A fraction as a percentage, two significant digits (`2.9%`).
+inline std::string percent(double fraction)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g%%", 100. * fraction);
+  return text;
+}
 
 // A docking site: its part type's name and its index (`"palm" site 2`).
 inline std::string site_text(const Morphable_part_model& model, const Site_ref& s)
