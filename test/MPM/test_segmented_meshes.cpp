@@ -82,9 +82,11 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   // The input has none; measured 0 (ant_81, hand_181: 8 and 7 before
   // folds were opened in a chart) and 7 (octopus_137, at a seam).
   EXPECT_LE(rest.self_intersections, 7) << name;
-  // Measured 0.20% (ant_81), 0.34% (hand_181), 0.55% (octopus_137); 0.55-0.69%
-  // before extremities were covered (cover_missed_points()).
-  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.007) << name;
+  // Below the 0.5% aimed at: measured 0.20% (ant_81), 0.34% (hand_181),
+  // 0.38% (octopus_137; 0.55% while a move onto its curled arm tip turned
+  // triangles and was undone); 0.55-0.69% before extremities were covered
+  // (cover_missed_points()).
+  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.005) << name;
 
   for(int edit = 0; edit < 2; ++edit)
   {
