@@ -140,9 +140,7 @@ void unfold_in_chart(const Surface& s, const Template_info& info, const Landmark
   const Eigen::Index n = y.rows();
   Uv uv(n, 2);
   for(Eigen::Index v = 0; v < n; ++v) uv.row(v) = chart.to_chart(y.row(v).transpose()).transpose();
-  std::vector<bool> pinned(std::size_t(n), false);
-  for(Eigen::Index v = 0; v < n; ++v) pinned[std::size_t(v)] = info.loop[v] >= 0 || info.neighbours[v].empty();
-  for(const auto& [v, p] : lm.vertex_targets) pinned[std::size_t(v)] = true;
+  const std::vector<bool> pinned = pinned_vertices(info, lm);
   const auto turned = [&](const Uv& at) {
     std::vector<int> r;
     for(std::size_t f = 0; f < triangles.size(); ++f)
@@ -154,17 +152,7 @@ void unfold_in_chart(const Surface& s, const Template_info& info, const Landmark
   int rings = 1;
   for(int pass = 0; pass < 100 && !folds.empty(); ++pass)
   {
-    std::vector<bool> moving(std::size_t(n), false);
-    for(int f : folds)
-      for(int v : triangles[std::size_t(f)]) moving[std::size_t(v)] = true;
-    for(int r = 0; r < rings; ++r)
-    {
-      std::vector<bool> grown = moving;
-      for(Eigen::Index v = 0; v < n; ++v)
-        if(moving[std::size_t(v)])
-          for(int w : info.neighbours[std::size_t(v)]) grown[std::size_t(w)] = true;
-      moving.swap(grown);
-    }
+    const std::vector<bool> moving = vertices_near(folds, triangles, info.neighbours, rings);
     Uv next = uv;
     for(int sweep = 0; sweep < 4; ++sweep)
     {

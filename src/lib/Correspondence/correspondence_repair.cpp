@@ -52,6 +52,34 @@ std::vector<std::vector<int>> rings_around(const std::vector<std::vector<int>>& 
 
 } // namespace
 
+// Seam vertices, landmarks and vertices of no triangle: what the repairs
+// leave where they are.
+std::vector<bool> pinned_vertices(const Template_info& info, const Landmarks& lm)
+{
+  std::vector<bool> pinned(info.loop.size(), false);
+  for(std::size_t v = 0; v < pinned.size(); ++v) pinned[v] = info.loop[v] >= 0 || info.neighbours[v].empty();
+  for(const auto& [v, p] : lm.vertex_targets) pinned[std::size_t(v)] = true;
+  return pinned;
+}
+
+// The vertices of `faces` and the `rings` rings of vertices around them.
+std::vector<bool> vertices_near(const std::vector<int>& faces, const std::vector<Triangle>& triangles,
+                                const std::vector<std::vector<int>>& neighbours, int rings)
+{
+  std::vector<bool> near(neighbours.size(), false);
+  for(int f : faces)
+    for(int v : triangles[std::size_t(f)]) near[std::size_t(v)] = true;
+  for(int r = 0; r < rings; ++r)
+  {
+    std::vector<bool> grown = near;
+    for(std::size_t v = 0; v < near.size(); ++v)
+      if(near[v])
+        for(int w : neighbours[v]) grown[std::size_t(w)] = true;
+    near.swap(grown);
+  }
+  return near;
+}
+
 // RMS distance of the segment's vertices to the mapped template surface.
 double coverage_residual(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles)
 {
@@ -93,24 +121,12 @@ void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, co
             Point_matrix& y)
 {
   std::vector<int> flipped = flipped_faces(s, y, triangles);
-  std::vector<bool> pinned(y.rows(), false);
-  for(Eigen::Index v = 0; v < y.rows(); ++v) pinned[v] = info.loop[v] >= 0;
-  for(const auto& [v, p] : lm.vertex_targets) pinned[v] = true;
+  const std::vector<bool> pinned = pinned_vertices(info, lm);
   Point_matrix current = y;
   int rings = 1;
   for(int pass = 0; pass < 60 && !flipped.empty(); ++pass)
   {
-    std::vector<bool> moving(y.rows(), false);
-    for(int f : flipped)
-      for(int v : triangles[f]) moving[v] = true;
-    for(int r = 0; r < rings; ++r)
-    {
-      std::vector<bool> grown = moving;
-      for(Eigen::Index v = 0; v < y.rows(); ++v)
-        if(moving[v])
-          for(int w : info.neighbours[v]) grown[w] = true;
-      moving.swap(grown);
-    }
+    const std::vector<bool> moving = vertices_near(flipped, triangles, info.neighbours, rings);
     const Point_matrix previous = current;
     for(Eigen::Index v = 0; v < y.rows(); ++v)
     {
@@ -146,9 +162,7 @@ void cover_missed_points(const Surface& s, const Template_info& info, const Land
                          const std::vector<Triangle>& triangles, Point_matrix& y)
 {
   const Eigen::Index n = y.rows();
-  std::vector<bool> fixed(std::size_t(n), false);
-  for(Eigen::Index v = 0; v < n; ++v) fixed[v] = info.loop[v] >= 0 || info.neighbours[v].empty();
-  for(const auto& [v, p] : lm.vertex_targets) fixed[v] = true;
+  std::vector<bool> fixed = pinned_vertices(info, lm);
   std::vector<std::vector<int>> faces_of{std::size_t(n)};
   double edge = 0.;
   for(std::size_t f = 0; f < triangles.size(); ++f)

@@ -216,6 +216,9 @@ int refine(const std::vector<std::unique_ptr<Surface>>& surfaces, const std::vec
            std::vector<Point_matrix>& y, Correspondence_energies& before, Correspondence_energies& after);
 
 // The repairs of correspondence_repair.cpp (comments there).
+std::vector<bool> pinned_vertices(const Template_info& info, const Landmarks& lm);
+std::vector<bool> vertices_near(const std::vector<int>& faces, const std::vector<Triangle>& triangles,
+                                const std::vector<std::vector<int>>& neighbours, int rings);
 double coverage_residual(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles);
 std::vector<int> flipped_faces(const Surface& s, const Point_matrix& y, const std::vector<Triangle>& triangles);
 void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, const std::vector<Triangle>& triangles,
