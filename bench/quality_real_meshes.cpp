@@ -13,6 +13,7 @@
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Editing/Limb_bending.h>
 #include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
@@ -23,6 +24,7 @@
 
 #include "quality_common.h"
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Edge_graph_distance.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -30,6 +32,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iomanip>
+#include <iterator>
 
 namespace {
 
@@ -48,6 +51,8 @@ struct Edit_result
   double drift = 0.; // largest move in ten more iterations after the solve, over the diagonal
   double worst_length_change = 0.; // largest |length / rest length - 1| of a part
   int parts_outside_range = 0;     // parts whose length leaves their type's range (+-10%)
+  double worst_stretch = 0.;       // the same for the length along the surface
+  int parts_stretched_outside_range = 0;
 };
 
 // Extent of a point set along its principal axis: a segment's length.
@@ -64,6 +69,29 @@ Point_matrix rows(const Point_matrix& p, const std::vector<int>& v, std::size_t 
   Point_matrix r(n, 3);
   for(std::size_t i = 0; i < n; ++i) r.row(i) = p.row(v[i]);
   return r;
+}
+
+// A segment's length along its surface: the shortest path along its edges
+// between the ends of its longest such path at rest (found by two sweeps),
+// measured at `positions`. Bending a segment leaves it as it is, as a
+// finger's skin keeps its length when the finger curls; stretching does not.
+// The extent along the principal axis (`length_of()`) shortens when a long,
+// curling part (an octopus arm) bends.
+double surface_length(const Point_matrix& rest, const Point_matrix& positions, const Part_node& node,
+                      const Part_type& type)
+{
+  const std::size_t n = type.number_of_vertices;
+  const std::vector<Cluster_edge> edges = internal::mesh_edges(type.triangles);
+  const auto farthest = [&](int from) {
+    const std::vector<double> d = internal::edge_graph_distances(rows(rest, node.vertices, n), edges, {from});
+    int f = from;
+    for(std::size_t v = 0; v < d.size(); ++v)
+      if(std::isfinite(d[v]) && d[v] > d[std::size_t(f)]) f = int(v);
+    return f;
+  };
+  const int a = farthest(farthest(0));
+  const int b = farthest(a);
+  return internal::edge_graph_distances(rows(positions, node.vertices, n), edges, {a})[std::size_t(b)];
 }
 
 Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem& problem, Embedding_solver& solver,
@@ -85,24 +113,30 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   for(int f : locally_inverted_faces(after, problem.mesh))
     r.new_folds += !std::binary_search(folded_at_rest.begin(), folded_at_rest.end(), f);
   r.new_self_intersections = std::max(0, r.soundness.self_intersections - std::max(0, rest.self_intersections));
-  std::map<int, std::pair<double, double>> range; // per type: rest lengths
   const Training_example& ex = model.examples.front();
-  for(const Part_node& node : ex.graph.nodes)
-  {
-    const std::size_t n = model.types[node.type].number_of_vertices;
-    const double l = length_of(rows(problem.mesh.points, node.vertices, n));
-    auto [it, added] = range.insert({node.type, {l, l}});
-    it->second = {std::min(it->second.first, l), std::max(it->second.second, l)};
-  }
-  for(const Part_node& node : ex.graph.nodes)
-  {
-    const std::size_t n = model.types[node.type].number_of_vertices;
-    const double before = length_of(rows(problem.mesh.points, node.vertices, n));
-    const double now = length_of(rows(after.points, node.vertices, n));
-    r.worst_length_change = std::max(r.worst_length_change, std::abs(now / before - 1.));
-    const auto [low, high] = range.at(node.type);
-    r.parts_outside_range += now < low / 1.1 || now > high * 1.1;
-  }
+  // Per measure of length, per type: the range of rest lengths.
+  const auto check_lengths = [&](const auto& length, double& worst, int& outside) {
+    std::map<int, std::pair<double, double>> range;
+    for(const Part_node& node : ex.graph.nodes)
+    {
+      const double l = length(problem.mesh.points, node);
+      auto [it, added] = range.insert({node.type, {l, l}});
+      it->second = {std::min(it->second.first, l), std::max(it->second.second, l)};
+    }
+    for(const Part_node& node : ex.graph.nodes)
+    {
+      const double before = length(problem.mesh.points, node), now = length(after.points, node);
+      worst = std::max(worst, std::abs(now / before - 1.));
+      const auto [low, high] = range.at(node.type);
+      outside += now < low / 1.1 || now > high * 1.1;
+    }
+  };
+  check_lengths([&](const Point_matrix& p, const Part_node& node) {
+    return length_of(rows(p, node.vertices, model.types[node.type].number_of_vertices));
+  }, r.worst_length_change, r.parts_outside_range);
+  check_lengths([&](const Point_matrix& p, const Part_node& node) {
+    return surface_length(problem.mesh.points, p, node, model.types[node.type]);
+  }, r.worst_stretch, r.parts_stretched_outside_range);
   // Whether the solve has settled: the tolerance is relative to the energy,
   // which says little when the energy is small or large.
   const double diagonal = internal::bounding_box_diagonal(after.points);
@@ -110,48 +144,6 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   for(int k = 0; k < 10; ++k) solver.iterate();
   r.drift = (solver.positions() - solved).rowwise().norm().maxCoeff() / diagonal;
   return r;
-}
-
-// One handle per tip (a part with one docking, not the largest part), at
-// its vertex farthest from its neighbour, moved by 10% of the diagonal
-// across the line from the root; the root's farthest vertices are held.
-std::vector<int> set_tip_handles(const Morphable_part_model& model, const Embedding_problem& problem,
-                                 Embedding_solver& solver)
-{
-  const Training_example& ex = model.examples.front();
-  const Part_adjacency_graph g = adjacency_graph(ex.graph);
-  int root = 0;
-  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
-    if(ex.graph.nodes[i].vertices.size() > ex.graph.nodes[root].vertices.size()) root = int(i);
-  const Point_matrix& p = problem.mesh.points;
-  const double diagonal = internal::bounding_box_diagonal(p);
-  const Eigen::RowVector3d centre = rows(p, ex.graph.nodes[root].vertices, ex.graph.nodes[root].vertices.size()).colwise().mean();
-  std::vector<int> vertices;
-  std::vector<Eigen::RowVector3d> targets;
-  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
-  {
-    if(boost::out_degree(i, g) != 1 || int(i) == root) continue;
-    const std::vector<int>& v = ex.graph.nodes[i].vertices;
-    int tip = v.front();
-    for(int x : v)
-      if((p.row(x) - centre).norm() > (p.row(tip) - centre).norm()) tip = x;
-    const Eigen::Vector3d axis = (p.row(tip) - centre).transpose().normalized();
-    Eigen::Vector3d side = axis.cross(Eigen::Vector3d::UnitZ());
-    if(side.norm() < 0.1) side = axis.cross(Eigen::Vector3d::UnitX());
-    vertices.push_back(tip);
-    targets.push_back(p.row(tip) + 0.1 * diagonal * side.normalized().transpose());
-  }
-  for(int x : ex.graph.nodes[root].vertices)
-    if(std::find(vertices.begin(), vertices.end(), x) == vertices.end() && vertices.size() < targets.size() + 4 &&
-       (p.row(x) - centre).norm() > 0.)
-    {
-      vertices.push_back(x);
-      targets.push_back(p.row(x));
-    }
-  Point_matrix y(targets.size(), 3);
-  for(std::size_t k = 0; k < targets.size(); ++k) y.row(k) = targets[k];
-  solver.set_handles(vertices, y);
-  return vertices;
 }
 
 // A segment inserted before the tip of every chain (the edge from a tip
@@ -207,7 +199,8 @@ std::string edit_cells(const Edit_result& r)
   s << (r.converged ? "yes " : "no ") << r.iterations << " | " << std::setprecision(2) << 100. * r.drift << " | "
     << r.soundness.border_edges << " | "
     << r.soundness.flipped_faces << " | " << r.inverted_before_unfolding << " | " << r.new_inverted << " (" << r.unfolded << ") | " << r.new_folds << " | " << r.new_self_intersections << " | " << std::fixed << std::setprecision(0)
-    << 100. * r.worst_length_change << "% (" << r.parts_outside_range << ")";
+    << 100. * r.worst_length_change << "% (" << r.parts_outside_range << ") | " << 100. * r.worst_stretch << "% ("
+    << r.parts_stretched_outside_range << ")";
   return s.str();
 }
 
@@ -223,8 +216,8 @@ int main(int argc, char** argv)
   const std::vector<std::string> names = options.meshes();
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | folded faces | new self-int. | Hausdorff % | "
                "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | inverted in part, solver's result | new inverted in part, written (rest folds unfolded) | new folds, written | new self-int. | "
-               "worst length change (parts out of range) |\n"
-               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+               "worst length change (parts out of range) | worst change of length along the surface (parts out of range) |\n"
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
   {
     try
@@ -242,7 +235,9 @@ int main(int argc, char** argv)
       const Training_example& ex = model.examples.front();
       const Surface_soundness input_soundness = check_surface(input.mesh.mesh);
       const Surface_soundness rest = check_surface(ex.mesh);
-      const std::vector<int> folded = folded_faces(ex.mesh, input.mesh.mesh);
+      const std::vector<int> folded = folded_faces(ex.mesh, input.mesh.mesh), spikes = spike_faces(ex.mesh);
+      std::vector<int> rest_faults;
+      std::set_union(folded.begin(), folded.end(), spikes.begin(), spikes.end(), std::back_inserter(rest_faults));
       int corresponded = 0;
       for(const Part_type& t : model.types) corresponded += t.space.number_of_instances() >= 2;
       const Insertions inserted = insert_into_every_chain(model);
@@ -268,9 +263,15 @@ int main(int argc, char** argv)
       for(Edit& e : edits)
       {
         Embedding_solver solver(e.problem);
-        const std::vector<int> held = e.drag ? set_tip_handles(model, e.problem, solver) : std::vector<int>();
+        std::vector<int> held;
+        if(e.drag)
+        {
+          const Handle_set handles = limb_bending_handles(model, 0, 0.1);
+          solver.set_handles(handles.vertices, handles.targets);
+          held = handles.vertices;
+        }
         std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | | | ") << e.name << " | "
-                  << edit_cells(evaluate(model, e.problem, solver, rest, folded, held)) << " |\n"
+                  << edit_cells(evaluate(model, e.problem, solver, rest, rest_faults, held)) << " |\n"
                   << std::flush;
       }
     }

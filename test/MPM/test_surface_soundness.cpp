@@ -99,3 +99,16 @@ TEST(Surface_soundness, a_thin_tube_curled_inverts_faces_within_its_part_but_fol
   fewer.triangles.pop_back();
   EXPECT_THROW(locally_inverted_faces(curled, fewer), Input_error);
 }
+
+// Every face of a tetrahedron meets its three neighbours at 109.5 degrees
+// (between normals): a spike; a smooth tube has none.
+TEST(Surface_soundness, spikes_are_faces_sharp_on_all_three_edges)
+{
+  Indexed_mesh tetrahedron;
+  tetrahedron.points.resize(4, 3);
+  tetrahedron.points << 1., 1., 1., 1., -1., -1., -1., 1., -1., -1., -1., 1.;
+  tetrahedron.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+  EXPECT_EQ(spike_faces(tetrahedron).size(), 4u);
+  EXPECT_EQ(spike_faces(tetrahedron, 2.).size(), 0u); // 1.91 radians
+  EXPECT_TRUE(spike_faces(two_tubes()).empty());
+}

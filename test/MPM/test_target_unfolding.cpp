@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Unfolding an edit's target: a fold pushed through a tube is taken out
-// around the fold and nowhere else; a tube bent past a half turn is no fold.
+// around the fold and nowhere else, as is a spike pulled out of it; a tube
+// bent past a half turn is no fold.
 #include <CGAL/MPM/Editing/Editing.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Editing/Surface_soundness.h>
@@ -57,6 +58,23 @@ TEST(Target_unfolding, a_fold_is_taken_out_where_it_is)
   // The vertex goes back near its place on the wall.
   EXPECT_LT((unfolded.row(fold) - rest.row(fold)).norm(), 0.3 * radius);
   // Rings more than six away from the fold are the target's.
+  for(int r = 0; r < rings; ++r)
+    if(std::abs(r - rings / 2) > 6)
+      for(int s = 0; s < sides; ++s) EXPECT_EQ(unfolded.row(r * sides + s), target.row(r * sides + s)) << r << " " << s;
+}
+
+// A vertex pulled out of the wall: its faces turn by less than a half turn
+// (no fold against their neighbourhood) but meet the rest of the wall at a
+// crease the rest does not have, as a caricature makes of a fold it doubles.
+TEST(Target_unfolding, a_spike_pulled_out_of_the_wall_is_taken_out)
+{
+  const Point_matrix rest = tube(0.);
+  Point_matrix target = rest;
+  const int spike = (rings / 2) * sides;
+  target.row(spike) = Eigen::RowVector3d(4. * radius, 0., rest(spike, 2));
+  ASSERT_EQ(internal::locally_inverted_faces(target, rest, mpm_test::tube_triangles(rings, sides)).size(), 0u);
+  const Point_matrix unfolded = internal::unfold_target(target, rest, mpm_test::tube_triangles(rings, sides));
+  EXPECT_LT((unfolded.row(spike) - rest.row(spike)).norm(), 0.3 * radius);
   for(int r = 0; r < rings; ++r)
     if(std::abs(r - rings / 2) > 6)
       for(int s = 0; s < sides; ++s) EXPECT_EQ(unfolded.row(r * sides + s), target.row(r * sides + s)) << r << " " << s;

@@ -168,6 +168,21 @@ std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surf
   return folded;
 }
 
+std::vector<int> spike_faces(const Indexed_mesh& mesh, double angle)
+{
+  std::vector<int> sharp_edges(mesh.triangles.size(), 0);
+  for(const internal::Edge_fold& e : internal::edge_folds(mesh.points, mesh.triangles))
+    if(e.angle > angle)
+    {
+      ++sharp_edges[std::size_t(e.first)];
+      ++sharp_edges[std::size_t(e.second)];
+    }
+  std::vector<int> spikes;
+  for(std::size_t f = 0; f < sharp_edges.size(); ++f)
+    if(sharp_edges[f] == 3) spikes.push_back(int(f));
+  return spikes;
+}
+
 double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
 {
   const Mesh ma = surface_mesh_of(a), mb = surface_mesh_of(b);

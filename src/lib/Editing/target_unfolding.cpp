@@ -6,9 +6,13 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <map>
 
 namespace CGAL {
@@ -89,6 +93,39 @@ std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_
     if(against == 3) inverted.push_back(int(f));
   }
   return inverted;
+}
+
+// Faces along an edge whose fold (the angle between its two faces' normals)
+// grew by more than 60 degrees against the rest: a crease pressed into the
+// surface, as a caricature makes of a fold it doubles. A bend spreads
+// over many edges; the two-ring rotations above take such a crease for
+// one, as it turns a face by less than 180 degrees.
+std::vector<int> creased_faces(const Point_matrix& target, const Point_matrix& rest,
+                               const std::vector<Triangle>& triangles)
+{
+  const std::vector<Edge_fold> now = edge_folds(target, triangles), before = edge_folds(rest, triangles);
+  const double limit = 60. * CGAL_PI / 180.;
+  std::vector<int> creased;
+  for(std::size_t e = 0; e < now.size(); ++e)
+    if(now[e].angle - before[e].angle > limit)
+    {
+      creased.push_back(now[e].first);
+      creased.push_back(now[e].second);
+    }
+  std::sort(creased.begin(), creased.end());
+  creased.erase(std::unique(creased.begin(), creased.end()), creased.end());
+  return creased;
+}
+
+// What `unfold_target()` takes out: folds and creases.
+std::vector<int> faulty_faces(const Point_matrix& target, const Point_matrix& rest,
+                              const std::vector<Triangle>& triangles, const std::vector<std::vector<int>>& next)
+{
+  const std::vector<int> folded = locally_inverted_faces(target, rest, triangles, next);
+  const std::vector<int> creased = creased_faces(target, rest, triangles);
+  std::vector<int> all;
+  std::set_union(folded.begin(), folded.end(), creased.begin(), creased.end(), std::back_inserter(all));
+  return all;
 }
 
 // The region (a flag per vertex) grown by one ring.
@@ -183,6 +220,26 @@ void reshape_piece(const std::vector<int>& piece, const Point_matrix& target, co
 
 } // namespace
 
+std::vector<Edge_fold> edge_folds(const Point_matrix& points, const std::vector<Triangle>& triangles)
+{
+  std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = triangles[f][std::size_t(k)], b = triangles[f][std::size_t((k + 1) % 3)];
+      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(int(f));
+    }
+  std::vector<Edge_fold> folds;
+  for(const auto& [edge, faces] : faces_of_edge)
+  {
+    if(faces.size() != 2) continue;
+    const Eigen::Vector3d m = normal_of(points, triangles[std::size_t(faces[0])]),
+                          n = normal_of(points, triangles[std::size_t(faces[1])]);
+    folds.push_back({faces[0], faces[1], std::atan2(m.cross(n).norm(), m.dot(n))});
+  }
+  return folds;
+}
+
 std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_matrix& rest,
                                         const std::vector<Triangle>& triangles)
 {
@@ -193,7 +250,7 @@ Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest,
                            const std::vector<int>& held)
 {
   const std::vector<std::vector<int>> next = neighbours_of(target.rows(), triangles);
-  const std::vector<int> inverted = locally_inverted_faces(target, rest, triangles, next);
+  const std::vector<int> inverted = faulty_faces(target, rest, triangles, next);
   if(inverted.empty()) return target;
   std::vector<bool> is_held(next.size(), false);
   for(int v : held) is_held[std::size_t(v)] = true;
@@ -209,7 +266,7 @@ Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest,
     Point_matrix candidate = target;
     for(const std::vector<int>& piece : pieces_of(region, next))
       reshape_piece(piece, target, rest, triangles, next, is_held, candidate);
-    const std::size_t count = locally_inverted_faces(candidate, rest, triangles, next).size();
+    const std::size_t count = faulty_faces(candidate, rest, triangles, next).size();
     if(count < best_count)
     {
       best = candidate;

@@ -5,6 +5,8 @@
 
 #include <CGAL/MPM/Indexed_mesh.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <utility>
 #include <vector>
 
@@ -75,6 +77,14 @@ std::vector<int> locally_inverted_faces(const Indexed_mesh& mesh, const Indexed_
 /// nearest to its centroid (CGAL's `AABB_tree`). These are folds of the
 /// correspondence; an edit that unfolds them inverts them against the rest.
 std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surface);
+
+/// \ingroup PkgMPMRef
+/// Faces of `mesh` that stand out of the surface as spikes: each of their
+/// three edges folds by more than `angle` (radians; the angle between the
+/// two faces' normals). A correspondence leaves a few next to seams; an
+/// edit that flattens one turns it against its rest normal, which
+/// `inverted_faces()` then counts although nothing turned inside out.
+std::vector<int> spike_faces(const Indexed_mesh& mesh, double angle = CGAL_PI / 3.);
 
 /// \ingroup PkgMPMRef
 /// Symmetric Hausdorff distance between two surfaces, approximated by

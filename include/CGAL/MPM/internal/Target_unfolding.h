@@ -32,6 +32,19 @@ Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest,
 std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_matrix& rest,
                                         const std::vector<Triangle>& triangles);
 
+// An edge of two triangles, by its faces, and the angle between their
+// normals: 0 where the surface is flat, pi where it folds back on itself.
+struct Edge_fold
+{
+  int first, second;
+  double angle;
+};
+
+// The folds of the edges of `triangles` that have two faces, in an order
+// that depends on the triangles alone (so that two positions of one mesh
+// give matching lists).
+std::vector<Edge_fold> edge_folds(const Point_matrix& points, const std::vector<Triangle>& triangles);
+
 } // namespace internal
 } // namespace MPM
 } // namespace CGAL
