@@ -268,11 +268,12 @@ private:
 
   void add_handle_commands()
   {
-    add("handles", 1, 2, "handles per-part N | handles farthest N | handles clear", [this](const Words& w) {
+    add("handles", 1, 2, "handles per-part N | handles farthest N | handles bend-limbs MOVE | handles clear", [this](const Words& w) {
       if(w[1] == "per-part" && w.size() == 3) session_.set_handles_per_part(integer(w[2]));
       else if(w[1] == "farthest" && w.size() == 3) session_.set_handles_farthest(integer(w[2]));
+      else if(w[1] == "bend-limbs" && w.size() == 3) session_.set_handles_bending_limbs(number(w[2]));
       else if(w[1] == "clear" && w.size() == 2) session_.clear_handles();
-      else throw Script_error("expected 'handles per-part N', 'handles farthest N' or 'handles clear'");
+      else throw Script_error("expected 'handles per-part N', 'handles farthest N', 'handles bend-limbs MOVE' or 'handles clear'");
       std::cout << "  " << session_.handle_vertices().size() << " handles\n";
     });
     add("handle", 2, 2, "handle add VERTEX | handle remove HANDLE", [this](const Words& w) {

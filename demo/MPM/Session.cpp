@@ -5,6 +5,7 @@
 #include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Editing/Arap_deformation.h>
 #include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/Editing/Limb_bending.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/IO/Model_io.h>
@@ -396,6 +397,13 @@ void Session::set_handles_per_part(int per_part)
 void Session::set_handles_farthest(int count)
 {
   replace_handles(MPM::farthest_point_handles(rest_, count, positions()));
+}
+
+void Session::set_handles_bending_limbs(double move)
+{
+  if(!has_model_) throw MPM::Input_error("demo", "limb bending", "load a model first");
+  if(graph_edited_) throw MPM::Input_error("demo", "limb bending", "applies to the training example, not an edited graph");
+  replace_handles(MPM::limb_bending_handles(model_, 0, move));
 }
 
 void Session::replace_handles(const MPM::Handle_set& h)

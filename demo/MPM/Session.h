@@ -119,6 +119,10 @@ public:
   void group_handles(const std::vector<int>& indices);
   void set_handles_per_part(int per_part);
   void set_handles_farthest(int count);
+  /// A handle on every limb's tip turned about the limb's attachment to the
+  /// root by `move` times the diagonal, the root held
+  /// (`limb_bending_handles()`); the training example only, not an edited graph.
+  void set_handles_bending_limbs(double move);
   void clear_handles();
   /// Moves handle `index` and every handle of its group by `delta`.
   void drag_handle(int index, const Eigen::RowVector3d& delta);

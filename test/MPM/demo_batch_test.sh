@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
 # Runs the Qt demo under a virtual X server in batch mode: a picked handle
-# dragged by synthetic mouse events, a scripted drag, a symmetrize and a
+# dragged by synthetic mouse events, a scripted drag, every limb bent, a symmetrize and a
 # segment insertion on a small synthetic hand, screenshots
 # after each, checked (by the demo's own check-image and compare-images
 # commands) to be not blank and to differ from one another. Then the start
@@ -39,6 +39,9 @@ drag 0 0.15 0.1 0.05
 screenshot $out/drag.png
 # every frame of a drag is solved and painted, with its latency measured
 profile-drag 5
+# every finger bent about its attachment to the palm
+handles bend-limbs 0.1
+screenshot $out/bend.png
 symmetrize 0.01
 screenshot $out/symmetrize.png
 deform
@@ -48,6 +51,8 @@ check-image $out/rest.png
 compare-images $out/rest.png $out/mouse.png
 compare-images $out/mouse.png $out/drag.png
 compare-images $out/rest.png $out/drag.png
+compare-images $out/rest.png $out/bend.png
+compare-images $out/drag.png $out/bend.png
 compare-images $out/drag.png $out/symmetrize.png
 compare-images $out/symmetrize.png $out/insert.png
 compare-images $out/rest.png $out/insert.png

@@ -412,6 +412,36 @@ TEST_F(Cli_editing, HandlesPerPartFromAPoseDriveADeformationTowardIt)
                {"--per-part"});
 }
 
+// `mpm handles --bend-limbs` turns every finger tip about its attachment to
+// the palm and holds the palm; deforming with them moves each tip by the
+// asked fraction of the diagonal (to within the soft handles' give) and
+// leaves the palm where it was.
+TEST_F(Cli_editing, BentLimbHandlesMoveEveryTipAndHoldThePalm)
+{
+  const Run_result h = run("handles " + quote(model()) + " --bend-limbs 0.1 -o " + quote(path("bend.json")) + " --json");
+  ASSERT_EQ(h.status, 0) << h.err;
+  const int count = json::parse(h.out)["handles"].get<int>();
+  const Run_result d = run("deform " + quote(model()) + " --handles " + quote(path("bend.json")) + " -o " +
+                           quote(path("bent.off")));
+  ASSERT_EQ(d.status, 0) << d.err;
+  const Point_matrix got = CGAL::MPM::read_mesh_file(path("bent.off")).mesh.points;
+  const double diagonal = (rest().colwise().maxCoeff() - rest().colwise().minCoeff()).norm();
+  const Eigen::VectorXd moved = (got - rest()).rowwise().norm() / diagonal;
+  int tips = 0, held = 0;
+  for(Eigen::Index v = 0; v < moved.size(); ++v)
+  {
+    tips += moved[v] > 0.09;
+    held += moved[v] < 1e-3;
+  }
+  EXPECT_GE(tips, 5);                // at least the five tips moved by about 10%
+  EXPECT_LE(moved.maxCoeff(), 0.12); // and nothing much further
+  EXPECT_GE(held, count - 5);        // the palm stayed
+  expect_error(run("handles " + quote(model()) + " --bend-limbs 0.1 --targets " + quote(path("bent.off")) + " -o " +
+                   quote(path("x.json"))),
+               2, {"--targets"});
+  expect_error(run("handles " + quote(model()) + " --bend-limbs 0 -o " + quote(path("x.json"))), 2, {"--bend-limbs"});
+}
+
 namespace {
 
 // `-` stands for one input file (standard input) and one output file
