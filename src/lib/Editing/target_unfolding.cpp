@@ -4,6 +4,7 @@
 
 #include <CGAL/MPM/Editing/Arap_deformation.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 
 #include <CGAL/number_type_config.h>
@@ -222,13 +223,9 @@ void reshape_piece(const std::vector<int>& piece, const Point_matrix& target, co
 
 std::vector<Edge_fold> edge_folds(const Point_matrix& points, const std::vector<Triangle>& triangles)
 {
-  std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
-  for(std::size_t f = 0; f < triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const int a = triangles[f][std::size_t(k)], b = triangles[f][std::size_t((k + 1) % 3)];
-      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(int(f));
-    }
+  Indexed_mesh connectivity;
+  connectivity.triangles = triangles;
+  const std::map<Mesh_edge, std::vector<int>> faces_of_edge = faces_of_edges(connectivity);
   std::vector<Edge_fold> folds;
   for(const auto& [edge, faces] : faces_of_edge)
   {

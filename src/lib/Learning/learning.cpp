@@ -6,6 +6,7 @@
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Training_parts.h>
+#include <CGAL/MPM/internal/Example_untangling.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
@@ -587,6 +588,39 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
   return model;
 }
 
+// Writes back into the rebuilt inputs what untangled_positions() moved in
+// the learned examples: a vertex of a part moved in the stitched example
+// is that part's own vertex in its rebuilt input (stitching identifies
+// seam vertices only, which stay). Returns whether anything moved.
+bool untangle_rebuilt_inputs(const Morphable_part_model& model, const std::vector<Training_input>& originals,
+                             Corresponded_training& corresponded)
+{
+  bool moved = false;
+  for(std::size_t e = 0; e < model.examples.size(); ++e)
+  {
+    const Training_example& example = model.examples[e];
+    const Point_matrix untangled = internal::untangled_positions(example.mesh, example.face_labels, originals[e].mesh);
+    if(untangled.rows() == 0) continue;
+    Labeled_mesh& rebuilt = corresponded.inputs[e].mesh;
+    const std::map<int, std::vector<int>> faces_of_label = faces_by_label(rebuilt);
+    std::vector<int> local_of(rebuilt.mesh.number_of_vertices(), -1);
+    for(const Part_node& node : example.graph.nodes)
+    {
+      std::vector<int> vertices;
+      std::vector<Triangle> triangles;
+      local_part(rebuilt.mesh, faces_of_label.at(node.label), local_of, vertices, triangles);
+      for(std::size_t l = 0; l < vertices.size(); ++l)
+      {
+        const int v = node.vertices[l];
+        if(untangled.row(v) == example.mesh.points.row(v)) continue;
+        rebuilt.mesh.points.row(vertices[l]) = untangled.row(v);
+        moved = true;
+      }
+    }
+  }
+  return moved;
+}
+
 } // namespace
 
 Morphable_part_model learn_morphable_part_model(const std::vector<Training_input>& inputs,
@@ -595,11 +629,23 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
   if(inputs.empty()) throw Input_error("", "", "no training mesh given");
   for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
   validate_seam_counts(inputs);
-  const Corresponded_training corresponded = correspond_training_inputs(inputs, options);
+  Corresponded_training corresponded = correspond_training_inputs(inputs, options);
   // With no type corresponded, the inputs are the user's, but segments that
   // could not be corresponded still got types of their own.
-  return corresponded.types.empty() ? learn_corresponded(corresponded.inputs, options, nullptr, nullptr)
-                                    : learn_corresponded(corresponded.inputs, options, &corresponded, &inputs);
+  if(corresponded.types.empty()) return learn_corresponded(corresponded.inputs, options, nullptr, nullptr);
+  // Where the stitched example crosses itself and its input does not, the
+  // corresponded parts are moved apart on the input's surface and learned
+  // again: the shape spaces must hold the example as it is. The first
+  // pass's warnings are said once, by the pass that is kept.
+  std::vector<std::string> warnings;
+  Learning_options first = options;
+  first.warning = [&warnings](const std::string& w) { warnings.push_back(w); };
+  Morphable_part_model model = learn_corresponded(corresponded.inputs, first, &corresponded, &inputs);
+  if(untangle_rebuilt_inputs(model, inputs, corresponded))
+    return learn_corresponded(corresponded.inputs, options, &corresponded, &inputs);
+  if(options.warning)
+    for(const std::string& w : warnings) options.warning(w);
+  return model;
 }
 
 Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const Annotation& annotation,

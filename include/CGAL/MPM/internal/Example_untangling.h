@@ -1,0 +1,31 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_INTERNAL_EXAMPLE_UNTANGLING_H
+#define CGAL_MPM_INTERNAL_EXAMPLE_UNTANGLING_H
+
+#include <CGAL/MPM/Indexed_mesh.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+namespace internal {
+
+// A learned example's faces that cross each other where its input's do not
+// (stitched templates meeting at a seam, a template's first ring folded
+// over its border) moved apart: the vertices of crossing faces, and rings
+// around them grown while that helps, go to the mean of their neighbours
+// and back onto the input faces of their own label; seam vertices slide
+// along the input's seam between their two labels (where seams meet they
+// stay), so the parts keep their seams. `mesh` and
+// `face_labels` are the example's; `input` the labelled input it
+// approximates. Returns the new positions, or an empty matrix when no
+// crossing could be taken out (or there was none the input does not have).
+Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
+                                 const Labeled_mesh& input);
+
+} // namespace internal
+} // namespace MPM
+} // namespace CGAL
+
+#endif
