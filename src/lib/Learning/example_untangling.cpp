@@ -3,10 +3,8 @@
 #include <CGAL/MPM/internal/Example_untangling.h>
 
 #include <CGAL/MPM/Editing/Surface_soundness.h>
-#include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 
-#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -14,7 +12,6 @@
 
 #include <map>
 #include <memory>
-#include <set>
 
 namespace CGAL {
 namespace MPM {
@@ -25,9 +22,6 @@ namespace {
 using Kernel = CGAL::Simple_cartesian<double>;
 using Triangle_iterator = std::vector<Kernel::Triangle_3>::const_iterator;
 using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangle_iterator>>>;
-using Segment_iterator = std::vector<Kernel::Segment_3>::const_iterator;
-using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_segment_primitive<Kernel, Segment_iterator>>>;
-using Label_pair = std::pair<int, int>;
 
 // The input's faces of one label, to project onto.
 struct Label_surface
@@ -35,31 +29,6 @@ struct Label_surface
   std::vector<Kernel::Triangle_3> triangles;
   std::unique_ptr<Triangle_tree> tree;
 };
-
-// The input's seam between two labels (edges with a face of each), to
-// slide a seam vertex along.
-struct Seam_curve
-{
-  std::vector<Kernel::Segment_3> segments;
-  std::unique_ptr<Segment_tree> tree;
-};
-
-std::map<Label_pair, Seam_curve> seams_by_label_pair(const Labeled_mesh& input)
-{
-  std::map<Label_pair, Seam_curve> seams;
-  const Point_matrix& p = input.mesh.points;
-  for(const auto& [edge, faces] : faces_of_edges(input.mesh))
-  {
-    if(faces.size() != 2) continue;
-    const int l0 = input.face_labels[std::size_t(faces[0])], l1 = input.face_labels[std::size_t(faces[1])];
-    if(l0 == l1) continue;
-    seams[{std::min(l0, l1), std::max(l0, l1)}].segments.emplace_back(
-      Kernel::Point_3(p(edge.first, 0), p(edge.first, 1), p(edge.first, 2)),
-      Kernel::Point_3(p(edge.second, 0), p(edge.second, 1), p(edge.second, 2)));
-  }
-  for(auto& [pair, c] : seams) c.tree = std::make_unique<Segment_tree>(c.segments.begin(), c.segments.end());
-  return seams;
-}
 
 std::map<int, Label_surface> surfaces_by_label(const Labeled_mesh& input)
 {
@@ -103,72 +72,54 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
 {
   std::vector<int> crossing;
   int best = crossing_pairs(mesh, &crossing);
-  const int own = crossing_pairs(input.mesh);
-  if(best <= std::max(own, 0)) return {};
-  // The labels of each vertex's faces: one inside a part; two on a seam,
-  // along which it slides; more where seams meet, where it stays.
-  std::vector<std::set<int>> labels(std::size_t(mesh.points.rows()));
+  const int own = std::max(crossing_pairs(input.mesh), 0);
+  if(best <= own) return {};
+  // Each vertex's label; -1 on a seam (faces of two labels), where it stays:
+  // a seam vertex moved would be merged anew when the model is learned
+  // again, and the dockings it changed folded an ant's legs when
+  // symmetrized.
+  std::vector<int> label(std::size_t(mesh.points.rows()), -2);
   for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for(int v : mesh.triangles[f]) labels[std::size_t(v)].insert(face_labels[f]);
-  std::vector<std::vector<int>> next(labels.size());
+    for(int v : mesh.triangles[f])
+      label[std::size_t(v)] = label[std::size_t(v)] == -2 || label[std::size_t(v)] == face_labels[f] ? face_labels[f] : -1;
+  std::vector<std::vector<int>> next(label.size());
   for(const Cluster_edge& e : mesh_edges(mesh.triangles))
   {
     next[std::size_t(e.source)].push_back(e.target);
     next[std::size_t(e.target)].push_back(e.source);
   }
   const std::map<int, Label_surface> surfaces = surfaces_by_label(input);
-  const std::map<Label_pair, Seam_curve> seams = seams_by_label_pair(input);
   const std::size_t folded = folded_faces(mesh, input.mesh).size();
-  // A vertex to the mean of its neighbours (on a seam, of its neighbours on
-  // the same seam), back onto its part of the input (its seam).
-  const auto move_to_neighbours = [&](int v, Point_matrix& points) {
-    const std::set<int>& own = labels[std::size_t(v)];
-    if(own.size() > 2) return;
+  // A vertex inside a part to the mean of its neighbours, back onto its
+  // part of the input.
+  const auto move_to_neighbours = [&](std::size_t v, Point_matrix& points) {
+    const auto s = surfaces.find(label[v]);
+    if(s == surfaces.end() || next[v].empty()) return;
     Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-    int count = 0;
-    for(int w : next[std::size_t(v)])
-      if(own.size() == 1 || labels[std::size_t(w)] == own)
-      {
-        mean += points.row(w);
-        ++count;
-      }
-    if(count == 0) return;
-    mean /= double(count);
-    const Kernel::Point_3 m(mean[0], mean[1], mean[2]);
-    Kernel::Point_3 q;
-    if(own.size() == 1)
-    {
-      const auto s = surfaces.find(*own.begin());
-      if(s == surfaces.end()) return;
-      q = s->second.tree->closest_point(m);
-    }
-    else
-    {
-      const auto c = seams.find({*own.begin(), *own.rbegin()});
-      if(c == seams.end()) return;
-      q = c->second.tree->closest_point(m);
-    }
-    points.row(v) << q.x(), q.y(), q.z();
+    for(int w : next[v]) mean += points.row(w);
+    mean /= double(next[v].size());
+    const Kernel::Point_3 q = s->second.tree->closest_point(Kernel::Point_3(mean[0], mean[1], mean[2]));
+    points.row(Eigen::Index(v)) << q.x(), q.y(), q.z();
   };
   Indexed_mesh best_mesh = mesh;
   bool improved = false;
   int rings = 1;
-  for(int pass = 0; pass < 12 && best > std::max(own, 0); ++pass)
+  for(int pass = 0; pass < 12 && best > own; ++pass)
   {
-    std::vector<bool> moving(labels.size(), false);
+    std::vector<bool> moving(label.size(), false);
     for(int f : crossing)
       for(int v : mesh.triangles[std::size_t(f)]) moving[std::size_t(v)] = true;
     for(int r = 0; r < rings; ++r)
     {
       const std::vector<bool> before = moving;
-      for(std::size_t v = 0; v < labels.size(); ++v)
+      for(std::size_t v = 0; v < label.size(); ++v)
         if(before[v])
           for(int w : next[v]) moving[std::size_t(w)] = true;
     }
     Indexed_mesh candidate = best_mesh;
     for(int sweep = 0; sweep < 5; ++sweep)
-      for(std::size_t v = 0; v < labels.size(); ++v)
-        if(moving[v] && !next[v].empty()) move_to_neighbours(int(v), candidate.points);
+      for(std::size_t v = 0; v < label.size(); ++v)
+        if(moving[v]) move_to_neighbours(v, candidate.points);
     std::vector<int> now;
     const int count = crossing_pairs(candidate, &now);
     if(count >= 0 && count < best && folded_faces(candidate, input.mesh).size() <= folded)

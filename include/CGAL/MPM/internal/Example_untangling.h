@@ -15,9 +15,8 @@ namespace internal {
 // (stitched templates meeting at a seam, a template's first ring folded
 // over its border) moved apart: the vertices of crossing faces, and rings
 // around them grown while that helps, go to the mean of their neighbours
-// and back onto the input faces of their own label; seam vertices slide
-// along the input's seam between their two labels (where seams meet they
-// stay), so the parts keep their seams. `mesh` and
+// and back onto the input faces of their own label. Seam vertices (of
+// faces of two labels) stay, so the parts keep their seams and dockings. `mesh` and
 // `face_labels` are the example's; `input` the labelled input it
 // approximates. Returns the new positions, or an empty matrix when no
 // crossing could be taken out (or there was none the input does not have).
