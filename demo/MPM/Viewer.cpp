@@ -150,6 +150,13 @@ void Viewer::on_scene_changed()
   dragged_handle_ = -1;
   tree_dirty_ = true;
   for(Mesh_buffers& m : meshes_) m.corners_dirty = m.colors_dirty = true;
+  const Point_matrix& rest = session_.rest().points;
+  if(rest.rows() == 0) return update();
+  const Eigen::RowVector3d lo = rest.colwise().minCoeff(), hi = rest.colwise().maxCoeff();
+  if(rest.rows() == framed_vertices_ && lo == framed_lo_ && hi == framed_hi_) return update();
+  framed_vertices_ = rest.rows();
+  framed_lo_ = lo;
+  framed_hi_ = hi;
   frame_scene();
 }
 

@@ -87,6 +87,11 @@ private:
   Mesh_buffers meshes_[2]; // MPM's mesh, ARAP's beside it
   QOpenGLBuffer scratch_positions_, scratch_colors_;
   std::vector<float> scratch_;
+  /// The rest mesh the view was last framed on, as its vertex count and
+  /// bounding box: a scene change that keeps it (new labels after a cut
+  /// click, a new edit mode) keeps the user's view.
+  Eigen::Index framed_vertices_ = -1;
+  Eigen::RowVector3d framed_lo_ = Eigen::RowVector3d::Zero(), framed_hi_ = Eigen::RowVector3d::Zero();
   bool gl_ready_ = false;
   std::unique_ptr<Picking_tree> tree_;
   bool tree_dirty_ = true;

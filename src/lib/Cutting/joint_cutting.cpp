@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Cutting/Joint_cutting.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Mesh_file_checks.h>
 #include <CGAL/MPM/Cutting/Mesh_cutting.h>
 #include <CGAL/MPM/internal/Joint_finder.h>
 
@@ -13,8 +14,7 @@ namespace MPM {
 
 namespace {
 
-std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
-
+using internal::vertex_name;
 
 // `count` vertices of the loop spread evenly along its length.
 std::vector<int> anchors(const Indexed_mesh& m, const std::vector<int>& loop, int count)

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/internal/Joint_finder.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Mesh_file_checks.h>
 #include <CGAL/MPM/internal/Crease_weights.h>
 #include <CGAL/MPM/internal/Vertex_components.h>
 
@@ -20,7 +21,7 @@ namespace {
 
 using Vector = Eigen::Vector3d;
 
-std::string vertex_name(int v) { return "vertex " + std::to_string(v); }
+using internal::vertex_name;
 
 double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {

@@ -468,7 +468,6 @@ Joint_proposal cut_at_proposed_joints(const Indexed_mesh& mesh, const Joint_prop
   const Joint_thresholds thresholds(options.sensitivity);
 
   Joint_proposal proposal;
-  proposal.limbs = int(limbs.size());
   std::vector<Limb_profile> profiles;
   for(std::size_t l = 0; l < limbs.size(); ++l) {
     Limb_profile p = limb_profile(branches, limbs[l], options);
@@ -478,6 +477,8 @@ Joint_proposal cut_at_proposed_joints(const Indexed_mesh& mesh, const Joint_prop
       p.joints.push_back({i, strength, false});
     profiles.push_back(std::move(p));
   }
+  // A branch without a base (no cut found where it leaves the body) is no limb.
+  proposal.limbs = int(profiles.size());
   add_joints_by_analogy(profiles);
   for(const Limb_profile& p : profiles) {
     proposal.joints.push_back({p.base_vertex, p.limb, true, 0.});
