@@ -120,7 +120,7 @@ public:
   void set_handles_per_part(int per_part);
   void set_handles_farthest(int count);
   /// A handle on every limb's tip turned about the limb's attachment to the
-  /// root by `move` times the diagonal, the root held
+  /// root by `move` times the diagonal, the root held away from its seams
   /// (`limb_bending_handles()`); the training example only, not an edited graph.
   void set_handles_bending_limbs(double move);
   void clear_handles();

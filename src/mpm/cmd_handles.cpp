@@ -96,8 +96,8 @@ Command make_handles_command()
     "with the example's triangles, e.g. from 'mpm synth FAMILY --pose-seed S'), or\n"
     "the rest positions. --bend-limbs MOVE takes a handle on every limb's tip, turned\n"
     "about the limb's attachment to the root by the angle that moves it by MOVE times\n"
-    "the bounding-box diagonal, and holds the root (the largest part). The file\n"
-    "format is doc/MPM/Handles.md.";
+    "the bounding-box diagonal, and holds the root (the largest part) away from its\n"
+    "seams. The file format is doc/MPM/Handles.md.";
   c.min_positionals = c.max_positionals = 1;
   c.options = {
     {"output", 'o', Value_kind::output_file, "H.json", "", "handle file to write (required)"},

@@ -5,12 +5,14 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Edge_graph_distance.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <string>
 
 namespace CGAL {
@@ -91,8 +93,32 @@ Handle_set limb_bending_handles(const Morphable_part_model& model, int example, 
     vertices.push_back(tip);
     targets.push_back(pivot + (Eigen::AngleAxisd(angle, arm.cross(side).normalized()) * arm).transpose());
   }
+  // The root is held away from its seams: held up to a seam, it would
+  // hold the first ring of the limb too, and the limb could not turn there.
+  std::vector<int> seams;
+  double radius = 0.;
+  int loops = 0;
+  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
+  {
+    if(int(i) == root) continue;
+    const std::vector<int> seam = shared_vertices(ex.graph.nodes[i].vertices, root_vertices);
+    if(seam.empty()) continue;
+    const Eigen::RowVector3d c = centre_of(p, seam);
+    for(int x : seam) radius += (p.row(x) - c).norm() / double(seam.size());
+    ++loops;
+    seams.insert(seams.end(), seam.begin(), seam.end());
+  }
+  std::vector<double> from_seams(std::size_t(p.rows()), std::numeric_limits<double>::infinity());
+  if(!seams.empty())
+  {
+    std::vector<Triangle> root_triangles;
+    for(std::size_t f = 0; f < ex.mesh.triangles.size(); ++f)
+      if(ex.face_labels[f] == ex.graph.nodes[std::size_t(root)].label) root_triangles.push_back(ex.mesh.triangles[f]);
+    from_seams = internal::edge_graph_distances(p, internal::mesh_edges(root_triangles), seams);
+  }
+  const double margin = loops > 0 ? radius / loops : 0.;
   for(int x : root_vertices)
-    if(std::find(vertices.begin(), vertices.end(), x) == vertices.end())
+    if(from_seams[std::size_t(x)] > margin && std::find(vertices.begin(), vertices.end(), x) == vertices.end())
     {
       vertices.push_back(x);
       targets.push_back(p.row(x));

@@ -15,8 +15,10 @@ namespace MPM {
 /// per tip (a part with one docking), at its vertex farthest from the
 /// attachment (the centre of the seam between the root and the limb's
 /// first segment), turned about that centre by the angle that moves it by
-/// `relative_move` times the bounding-box diagonal, and every vertex of
-/// the root held where it rests. A limb reaches its handle by bending at
+/// `relative_move` times the bounding-box diagonal, and the root held where
+/// it rests away from its seams (its vertices farther along its edges from
+/// every seam than the seams' mean radius), so that the limbs can turn at
+/// their attachment. A limb reaches its handle by bending at
 /// its joints, without stretching: the drag that tests whether a model's
 /// joints bend and its segments keep their length
 /// (`bench/quality_real_meshes`). Throws `Input_error` for a missing
