@@ -6,7 +6,6 @@
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Training_parts.h>
-#include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/internal/Example_untangling.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
@@ -589,19 +588,6 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
   return model;
 }
 
-// Face pairs crossing each other in a model's examples.
-int crossing_pairs_of_examples(const Morphable_part_model& model)
-{
-  int pairs = 0;
-  for(const Training_example& example : model.examples)
-  {
-    std::vector<std::pair<int, int>> crossing;
-    self_intersecting_faces(example.mesh, crossing);
-    pairs += int(crossing.size());
-  }
-  return pairs;
-}
-
 // Writes back into the rebuilt inputs what untangled_positions() moved in
 // the learned examples: a vertex of a part moved in the stitched example
 // is that part's own vertex in its rebuilt input (stitching identifies
@@ -649,29 +635,18 @@ Morphable_part_model learn_morphable_part_model(const std::vector<Training_input
   if(corresponded.types.empty()) return learn_corresponded(corresponded.inputs, options, nullptr, nullptr);
   // Where the stitched example crosses itself and its input does not, the
   // corresponded parts are moved apart on the input's surface and learned
-  // again: the shape spaces must hold the example as it is. Learning again
-  // merges moved seams anew (a seam vertex is the mean of both sides'
-  // samplings) and can cross elsewhere, so the pass whose examples cross
-  // least is kept, and only its warnings are said.
-  std::vector<std::string> warnings, best_warnings;
+  // again: the shape spaces must hold the example as it is. Seam vertices
+  // stay, so learning again stitches the same seams and gives the moved
+  // example back as it is. The first pass's warnings are said once.
+  std::vector<std::string> warnings;
   Learning_options quiet = options;
   quiet.warning = [&warnings](const std::string& w) { warnings.push_back(w); };
-  Morphable_part_model best = learn_corresponded(corresponded.inputs, quiet, &corresponded, &inputs);
-  best_warnings = warnings;
-  const int crossing = crossing_pairs_of_examples(best);
-  if(crossing > 0 && untangle_rebuilt_inputs(best, inputs, corresponded))
-  {
-    warnings.clear();
-    Morphable_part_model untangled = learn_corresponded(corresponded.inputs, quiet, &corresponded, &inputs);
-    if(crossing_pairs_of_examples(untangled) < crossing)
-    {
-      best = std::move(untangled);
-      best_warnings = warnings;
-    }
-  }
+  Morphable_part_model model = learn_corresponded(corresponded.inputs, quiet, &corresponded, &inputs);
+  if(untangle_rebuilt_inputs(model, inputs, corresponded))
+    return learn_corresponded(corresponded.inputs, options, &corresponded, &inputs);
   if(options.warning)
-    for(const std::string& w : best_warnings) options.warning(w);
-  return best;
+    for(const std::string& w : warnings) options.warning(w);
+  return model;
 }
 
 Morphable_part_model learn_morphable_part_model(const Labeled_mesh& mesh, const Annotation& annotation,
