@@ -41,6 +41,13 @@ Eigen::Vector3d normal_of(const Point_matrix& p, const Triangle& t)
   return (p.row(t[1]) - p.row(t[0])).cross(p.row(t[2]) - p.row(t[0])).transpose();
 }
 
+// The angle between the normals of faces `f` and `g`.
+double fold_angle(const Point_matrix& p, const std::vector<Triangle>& triangles, int f, int g)
+{
+  const Eigen::Vector3d m = normal_of(p, triangles[std::size_t(f)]), n = normal_of(p, triangles[std::size_t(g)]);
+  return std::atan2(m.cross(n).norm(), m.dot(n));
+}
+
 // Per vertex, the best rotation from `rest` to `target` of the vertices two
 // edges away: the vertex and its first ring are left out so that a vertex
 // pushed through the surface does not sway the rotations its own faces are
@@ -101,17 +108,17 @@ std::vector<int> locally_inverted_faces(const Point_matrix& target, const Point_
 // surface, as a caricature makes of a fold it doubles. A bend spreads
 // over many edges; the two-ring rotations above take such a crease for
 // one, as it turns a face by less than 180 degrees.
-std::vector<int> creased_faces(const Point_matrix& target, const Point_matrix& rest,
-                               const std::vector<Triangle>& triangles)
+// `rest_folds` are the rest's (edge_folds()), measured once per unfolding.
+std::vector<int> creased_faces(const Point_matrix& target, const std::vector<Triangle>& triangles,
+                               const std::vector<Edge_fold>& rest_folds)
 {
-  const std::vector<Edge_fold> now = edge_folds(target, triangles), before = edge_folds(rest, triangles);
   const double limit = 60. * CGAL_PI / 180.;
   std::vector<int> creased;
-  for(std::size_t e = 0; e < now.size(); ++e)
-    if(now[e].angle - before[e].angle > limit)
+  for(const Edge_fold& e : rest_folds)
+    if(fold_angle(target, triangles, e.first, e.second) - e.angle > limit)
     {
-      creased.push_back(now[e].first);
-      creased.push_back(now[e].second);
+      creased.push_back(e.first);
+      creased.push_back(e.second);
     }
   std::sort(creased.begin(), creased.end());
   creased.erase(std::unique(creased.begin(), creased.end()), creased.end());
@@ -120,10 +127,11 @@ std::vector<int> creased_faces(const Point_matrix& target, const Point_matrix& r
 
 // What `unfold_target()` takes out: folds and creases.
 std::vector<int> faulty_faces(const Point_matrix& target, const Point_matrix& rest,
-                              const std::vector<Triangle>& triangles, const std::vector<std::vector<int>>& next)
+                              const std::vector<Triangle>& triangles, const std::vector<std::vector<int>>& next,
+                              const std::vector<Edge_fold>& rest_folds)
 {
   const std::vector<int> folded = locally_inverted_faces(target, rest, triangles, next);
-  const std::vector<int> creased = creased_faces(target, rest, triangles);
+  const std::vector<int> creased = creased_faces(target, triangles, rest_folds);
   std::vector<int> all;
   std::set_union(folded.begin(), folded.end(), creased.begin(), creased.end(), std::back_inserter(all));
   return all;
@@ -228,12 +236,7 @@ std::vector<Edge_fold> edge_folds(const Point_matrix& points, const std::vector<
   const std::map<Mesh_edge, std::vector<int>> faces_of_edge = faces_of_edges(connectivity);
   std::vector<Edge_fold> folds;
   for(const auto& [edge, faces] : faces_of_edge)
-  {
-    if(faces.size() != 2) continue;
-    const Eigen::Vector3d m = normal_of(points, triangles[std::size_t(faces[0])]),
-                          n = normal_of(points, triangles[std::size_t(faces[1])]);
-    folds.push_back({faces[0], faces[1], std::atan2(m.cross(n).norm(), m.dot(n))});
-  }
+    if(faces.size() == 2) folds.push_back({faces[0], faces[1], fold_angle(points, triangles, faces[0], faces[1])});
   return folds;
 }
 
@@ -247,7 +250,8 @@ Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest,
                            const std::vector<int>& held)
 {
   const std::vector<std::vector<int>> next = neighbours_of(target.rows(), triangles);
-  const std::vector<int> inverted = faulty_faces(target, rest, triangles, next);
+  const std::vector<Edge_fold> rest_folds = edge_folds(rest, triangles);
+  const std::vector<int> inverted = faulty_faces(target, rest, triangles, next, rest_folds);
   if(inverted.empty()) return target;
   std::vector<bool> is_held(next.size(), false);
   for(int v : held) is_held[std::size_t(v)] = true;
@@ -263,7 +267,7 @@ Point_matrix unfold_target(const Point_matrix& target, const Point_matrix& rest,
     Point_matrix candidate = target;
     for(const std::vector<int>& piece : pieces_of(region, next))
       reshape_piece(piece, target, rest, triangles, next, is_held, candidate);
-    const std::size_t count = faulty_faces(candidate, rest, triangles, next).size();
+    const std::size_t count = faulty_faces(candidate, rest, triangles, next, rest_folds).size();
     if(count < best_count)
     {
       best = candidate;
