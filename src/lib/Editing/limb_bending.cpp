@@ -7,12 +7,15 @@
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 
+#include <boost/graph/breadth_first_search.hpp>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace CGAL {
@@ -32,27 +35,59 @@ Eigen::RowVector3d centre_of(const Point_matrix& p, const std::vector<int>& vert
 std::vector<int> steps_toward(int root, const Part_adjacency_graph& g)
 {
   std::vector<int> toward(boost::num_vertices(g), -1);
-  std::vector<int> queue{root};
   toward[std::size_t(root)] = root;
-  for(std::size_t k = 0; k < queue.size(); ++k)
-    for(auto [e, end] = boost::out_edges(queue[k], g); e != end; ++e)
-    {
-      const int next = int(boost::target(*e, g));
-      if(toward[std::size_t(next)] >= 0) continue;
-      toward[std::size_t(next)] = queue[k];
-      queue.push_back(next);
-    }
+  boost::breadth_first_search(
+    g, boost::vertex(root, g),
+    boost::visitor(boost::make_bfs_visitor(boost::record_predecessors(toward.data(), boost::on_tree_edge()))));
   return toward;
 }
 
-// The vertices two parts share (their seam in a stitched example).
-std::vector<int> shared_vertices(std::vector<int> a, std::vector<int> b)
+// Per neighbour of the root, the vertices it shares with it: their seam in
+// a stitched example.
+std::map<int, std::vector<int>> seams_of_root(const Training_example& ex, int root)
 {
-  std::sort(a.begin(), a.end());
-  std::sort(b.begin(), b.end());
-  std::vector<int> common;
-  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
-  return common;
+  std::vector<int> own = ex.graph.nodes[std::size_t(root)].vertices;
+  std::sort(own.begin(), own.end());
+  std::map<int, std::vector<int>> seams;
+  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
+  {
+    if(int(i) == root) continue;
+    std::vector<int> other = ex.graph.nodes[i].vertices, common;
+    std::sort(other.begin(), other.end());
+    std::set_intersection(own.begin(), own.end(), other.begin(), other.end(), std::back_inserter(common));
+    if(!common.empty()) seams[int(i)] = std::move(common);
+  }
+  return seams;
+}
+
+// The root's vertices away from its seams: farther along its edges from
+// every seam than the seams' mean radius. Held up to a seam, the root would
+// hold the first ring of the limb too, and the limb could not turn there.
+std::vector<int> root_away_from_seams(const Training_example& ex, int root,
+                                      const std::map<int, std::vector<int>>& seams)
+{
+  const Point_matrix& p = ex.mesh.points;
+  std::vector<int> all;
+  double radius = 0.;
+  for(const auto& [node, seam] : seams)
+  {
+    const Eigen::RowVector3d c = centre_of(p, seam);
+    for(int x : seam) radius += (p.row(x) - c).norm() / double(seam.size());
+    all.insert(all.end(), seam.begin(), seam.end());
+  }
+  std::vector<double> from_seams(std::size_t(p.rows()), std::numeric_limits<double>::infinity());
+  if(!seams.empty())
+  {
+    std::vector<Triangle> root_triangles;
+    for(std::size_t f = 0; f < ex.mesh.triangles.size(); ++f)
+      if(ex.face_labels[f] == ex.graph.nodes[std::size_t(root)].label) root_triangles.push_back(ex.mesh.triangles[f]);
+    from_seams = internal::edge_graph_distances(p, internal::mesh_edges(root_triangles), all);
+  }
+  const double margin = seams.empty() ? 0. : radius / double(seams.size());
+  std::vector<int> held;
+  for(int x : ex.graph.nodes[std::size_t(root)].vertices)
+    if(from_seams[std::size_t(x)] > margin) held.push_back(x);
+  return held;
 }
 
 } // namespace
@@ -70,9 +105,9 @@ Handle_set limb_bending_handles(const Morphable_part_model& model, int example, 
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
     if(ex.graph.nodes[i].vertices.size() > ex.graph.nodes[std::size_t(root)].vertices.size()) root = int(i);
   const std::vector<int> toward_root = steps_toward(root, g);
+  const std::map<int, std::vector<int>> seams = seams_of_root(ex, root);
   const Point_matrix& p = ex.mesh.points;
   const double move = relative_move * internal::bounding_box_diagonal(p);
-  const std::vector<int>& root_vertices = ex.graph.nodes[std::size_t(root)].vertices;
   std::vector<int> vertices;
   std::vector<Eigen::RowVector3d> targets;
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
@@ -80,8 +115,9 @@ Handle_set limb_bending_handles(const Morphable_part_model& model, int example, 
     if(boost::out_degree(i, g) != 1 || int(i) == root || toward_root[i] < 0) continue;
     int first = int(i);
     while(toward_root[std::size_t(first)] != root) first = toward_root[std::size_t(first)];
-    const std::vector<int> seam = shared_vertices(ex.graph.nodes[std::size_t(first)].vertices, root_vertices);
-    const Eigen::RowVector3d pivot = centre_of(p, seam.empty() ? root_vertices : seam);
+    const auto seam = seams.find(first);
+    const Eigen::RowVector3d pivot =
+      centre_of(p, seam == seams.end() ? ex.graph.nodes[std::size_t(root)].vertices : seam->second);
     int tip = ex.graph.nodes[i].vertices.front();
     for(int x : ex.graph.nodes[i].vertices)
       if((p.row(x) - pivot).norm() > (p.row(tip) - pivot).norm()) tip = x;
@@ -93,32 +129,8 @@ Handle_set limb_bending_handles(const Morphable_part_model& model, int example, 
     vertices.push_back(tip);
     targets.push_back(pivot + (Eigen::AngleAxisd(angle, arm.cross(side).normalized()) * arm).transpose());
   }
-  // The root is held away from its seams: held up to a seam, it would
-  // hold the first ring of the limb too, and the limb could not turn there.
-  std::vector<int> seams;
-  double radius = 0.;
-  int loops = 0;
-  for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
-  {
-    if(int(i) == root) continue;
-    const std::vector<int> seam = shared_vertices(ex.graph.nodes[i].vertices, root_vertices);
-    if(seam.empty()) continue;
-    const Eigen::RowVector3d c = centre_of(p, seam);
-    for(int x : seam) radius += (p.row(x) - c).norm() / double(seam.size());
-    ++loops;
-    seams.insert(seams.end(), seam.begin(), seam.end());
-  }
-  std::vector<double> from_seams(std::size_t(p.rows()), std::numeric_limits<double>::infinity());
-  if(!seams.empty())
-  {
-    std::vector<Triangle> root_triangles;
-    for(std::size_t f = 0; f < ex.mesh.triangles.size(); ++f)
-      if(ex.face_labels[f] == ex.graph.nodes[std::size_t(root)].label) root_triangles.push_back(ex.mesh.triangles[f]);
-    from_seams = internal::edge_graph_distances(p, internal::mesh_edges(root_triangles), seams);
-  }
-  const double margin = loops > 0 ? radius / loops : 0.;
-  for(int x : root_vertices)
-    if(from_seams[std::size_t(x)] > margin && std::find(vertices.begin(), vertices.end(), x) == vertices.end())
+  for(int x : root_away_from_seams(ex, root, seams))
+    if(std::find(vertices.begin(), vertices.end(), x) == vertices.end())
     {
       vertices.push_back(x);
       targets.push_back(p.row(x));
