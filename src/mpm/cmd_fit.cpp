@@ -282,11 +282,16 @@ int run_leave_one_out(const Args& args, Context& context)
   std::cout << "Leave-one-out over " << files.size() << " meshes: each learned from the others, then fitted\n\n";
   table.print(std::cout);
   for(const std::string& s : skipped) std::cout << "  skipped: " << s << "\n";
-  Table types({"type", "segments", "RMS % mesh", "RMS % segment", "worst % mesh"}, {false, true, true, true, true});
+  Table types({"type", "segments", "RMS % mesh", "RMS % segment", "worst % mesh", "worst coverage %"},
+              {false, true, true, true, true, true});
   for(const Type_fit_error& e : pooled)
     types.add_row({e.name, std::to_string(e.segments), percent(e.rms_over_mesh_diagonal),
-                   percent(e.rms_over_segment_diagonal), percent(e.worst_over_mesh_diagonal)});
-  std::cout << "\nPer part type, over all held-out meshes\n";
+                   percent(e.rms_over_segment_diagonal), percent(e.worst_over_mesh_diagonal),
+                   percent(e.worst_coverage_residual)});
+  // The RMS is against the corresponded positions: a correspondence that
+  // misses the segment (coverage) makes it say little.
+  std::cout << "\nPer part type, over all held-out meshes (worst coverage: how far the segment lies from the "
+               "template put on it, % of the segment's diagonal)\n";
   types.print(std::cout);
   return exit_ok;
 }

@@ -17,10 +17,18 @@
 
 #include <CGAL/MPM/IO/Mesh_io.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/MPM/IO/Face_graph_conversion.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -71,6 +79,102 @@ Indexed_mesh capped_tube(int rings, int sides, double length)
   const int top = (rings - 1) * sides;
   for(int s = 0; s < sides; ++s) m.triangles.push_back({top + s, top + (s + 1) % sides, apex});
   return m;
+}
+
+// A thorax: a sphere (an icosahedron subdivided by CGAL's Loop
+// subdivision, stretched along y by `stretch`) with eight round holes:
+// a head at -y, an abdomen at +y and six legs, left and right at three
+// heights, of radii `legs` (radians). Seam tags: head 1, abdomen 2, legs 3.
+struct Thorax
+{
+  Indexed_mesh mesh;
+  std::vector<int> seam_tags;
+  std::vector<Eigen::Vector3d> hole_centres; // head, abdomen, then the legs
+};
+
+Thorax thorax(const std::array<double, 6>& legs, double stretch, const Eigen::Matrix3d& rotation)
+{
+  CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> sphere;
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  CGAL::make_icosahedron<decltype(sphere), Point>(sphere, Point(0, 0, 0), 1.);
+  CGAL::Subdivision_method_3::Loop_subdivision(sphere, CGAL::parameters::number_of_iterations(4));
+  Indexed_mesh round = to_indexed_mesh(sphere);
+  std::vector<Eigen::Vector3d> directions{{0, -1, 0}, {0, 1, 0}};
+  std::vector<double> radii{0.3, 0.35};
+  for(int k = 0; k < 6; ++k)
+  {
+    directions.push_back(Eigen::Vector3d(k % 2 ? 0.8 : -0.8, 0.9 * (k / 2 - 1), -0.4).normalized());
+    radii.push_back(legs[std::size_t(k)]);
+  }
+  Thorax t;
+  std::vector<int> hole_of_face;
+  std::vector<Triangle> kept;
+  for(const Triangle& f : round.triangles)
+  {
+    const Eigen::Vector3d c =
+      (round.points.row(f[0]) + round.points.row(f[1]) + round.points.row(f[2])).transpose().normalized();
+    int hole = -1;
+    for(std::size_t h = 0; h < directions.size(); ++h)
+      if(std::acos(std::clamp(c.dot(directions[h]), -1., 1.)) < radii[h]) hole = int(h);
+    if(hole < 0) kept.push_back(f);
+  }
+  std::map<int, int> local;
+  for(Triangle& f : kept)
+    for(int& v : f) v = local.insert({v, int(local.size())}).first->second;
+  t.mesh.triangles = kept;
+  t.mesh.points.resize(Eigen::Index(local.size()), 3);
+  const Eigen::Vector3d scale(1., stretch, 1.);
+  for(const auto& [old, v] : local)
+    t.mesh.points.row(v) = (rotation * round.points.row(old).transpose().normalized().cwiseProduct(scale)).transpose();
+  for(const Eigen::Vector3d& d : directions) t.hole_centres.push_back(rotation * d.cwiseProduct(scale));
+  t.seam_tags.assign(local.size(), -1);
+  for(const std::vector<int>& loop : boundary_loops(t.mesh))
+  {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for(int v : loop) c += t.mesh.points.row(v).transpose();
+    c /= double(loop.size());
+    std::size_t nearest = 0;
+    for(std::size_t h = 1; h < t.hole_centres.size(); ++h)
+      if((t.hole_centres[h] - c).norm() < (t.hole_centres[nearest] - c).norm()) nearest = h;
+    for(int v : loop) t.seam_tags[std::size_t(v)] = nearest < 2 ? int(nearest) + 1 : 3;
+  }
+  return t;
+}
+
+// Too many seams to try every order (8! here): the legs, alike in tag and
+// nearly in length, and longest in a different order on the two segments,
+// must still each land on their own leg, not on the next one by length.
+TEST(Dense_correspondence, eight_seams_each_land_on_their_own_hole)
+{
+  const Thorax a = thorax({0.20, 0.21, 0.22, 0.23, 0.24, 0.25}, 1., Eigen::Matrix3d::Identity());
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Thorax b = thorax({0.25, 0.24, 0.23, 0.22, 0.21, 0.20}, 1.25, turn);
+  std::vector<Correspondence_segment> pair(2);
+  pair[0].mesh = a.mesh;
+  pair[0].seam_tags = a.seam_tags;
+  pair[0].name = "thorax a";
+  pair[1].mesh = b.mesh;
+  pair[1].seam_tags = b.seam_tags;
+  pair[1].name = "thorax b";
+  ASSERT_EQ(boundary_loops(a.mesh).size(), 8u);
+  ASSERT_EQ(boundary_loops(b.mesh).size(), 8u);
+  const Dense_correspondence c = compute_dense_correspondence(pair, "thorax");
+  const Point_matrix& on_b = c.segments[1].positions;
+  for(const std::vector<int>& loop : boundary_loops(a.mesh))
+  {
+    Eigen::Vector3d from = Eigen::Vector3d::Zero(), to = Eigen::Vector3d::Zero();
+    for(int v : loop) from += a.mesh.points.row(v).transpose(), to += on_b.row(v).transpose();
+    from /= double(loop.size()), to /= double(loop.size());
+    std::size_t hole = 0, lands = 0;
+    for(std::size_t h = 1; h < a.hole_centres.size(); ++h)
+    {
+      if((a.hole_centres[h] - from).norm() < (a.hole_centres[hole] - from).norm()) hole = h;
+      if((b.hole_centres[h] - to).norm() < (b.hole_centres[lands] - to).norm()) lands = h;
+    }
+    EXPECT_EQ(lands, hole) << "hole " << hole << " of the template lands on hole " << lands;
+  }
+  EXPECT_LT(c.segments[1].residual, 0.01);
+  EXPECT_LT(c.segments[1].flipped_faces, int(c.triangles.size() / 100));
 }
 
 TEST(Dense_correspondence, remeshed_parts_share_no_connectivity)

@@ -6,8 +6,10 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <limits>
 #include <numeric>
+#include <tuple>
 
 namespace CGAL {
 namespace MPM {
@@ -111,6 +113,88 @@ Point_matrix repeated(const Vec3& p, int count) { return p.transpose().replicate
 double rms(const Point_matrix& a, const Point_matrix& b)
 {
   return a.rows() ? std::sqrt((a - b).squaredNorm() / a.rows()) : 0.;
+}
+
+bool tag_agrees(const Surface& t, int l, const Surface& s, int j)
+{
+  return t.loop_tags[std::size_t(l)] < 0 || s.loop_tags[std::size_t(j)] < 0 ||
+         t.loop_tags[std::size_t(l)] == s.loop_tags[std::size_t(j)];
+}
+
+// A loop's centroid and the point at its mean radius along its normal
+// (from the loop's direction, which follows the triangles): a motion that
+// carries one loop onto another keeps the surface's orientation only if it
+// carries both points.
+Point_matrix oriented_loop_points(const Loop& l)
+{
+  Vec3 normal = Vec3::Zero();
+  const Eigen::Index k = l.points.rows();
+  for(Eigen::Index i = 0; i < k; ++i)
+    normal += (l.points.row(i).transpose() - l.centroid).cross(l.points.row((i + 1) % k).transpose() - l.centroid);
+  const double radius = (l.points.rowwise() - l.centroid.transpose()).rowwise().norm().mean();
+  Point_matrix p(2, 3);
+  p.row(0) = l.centroid.transpose();
+  const Vec3 lift = normal.norm() > 0 ? Vec3(radius * normal.normalized()) : Vec3::Zero();
+  p.row(1) = (l.centroid + lift).transpose();
+  return p;
+}
+
+// Loop orders worth trying on a part with too many loops to try them all
+// (8! for an ant's thorax, its six legs alike in length and tag): each
+// placement of the template's three longest loops on three segment loops
+// whose tags agree gives a rigid motion (from their oriented points and
+// the area centroids), under which every other loop takes the nearest
+// free segment loop whose tag agrees. The `keep` orders whose loops then
+// fit best; the identity (length order) when nothing agrees.
+std::vector<std::vector<int>> likely_loop_orders(const Surface& t, const Surface& s, std::size_t keep)
+{
+  const int loops = static_cast<int>(t.loops.size());
+  std::vector<std::pair<double, std::vector<int>>> found;
+  const auto centroids = [](const Surface& x, const std::vector<int>& order) {
+    Point_matrix p(2 * Eigen::Index(order.size()) + 1, 3);
+    for(std::size_t k = 0; k < order.size(); ++k)
+      p.middleRows(2 * Eigen::Index(k), 2) = oriented_loop_points(x.loops[std::size_t(order[k])]);
+    p.row(2 * Eigen::Index(order.size())) = x.area_centroid.transpose();
+    return p;
+  };
+  std::vector<int> identity(loops);
+  std::iota(identity.begin(), identity.end(), 0);
+  const Point_matrix all_t = centroids(t, identity);
+  for(int a = 0; a < loops; ++a)
+    for(int b = 0; b < loops; ++b)
+      for(int c = 0; c < loops; ++c)
+      {
+        if(a == b || a == c || b == c || !tag_agrees(t, 0, s, a) || !tag_agrees(t, 1, s, b) || !tag_agrees(t, 2, s, c))
+          continue;
+        const Rigid_motion motion = fit_rigid_motion(centroids(t, {0, 1, 2}), centroids(s, {a, b, c}));
+        std::vector<int> order(std::size_t(loops), -1);
+        std::vector<bool> taken(std::size_t(loops), false);
+        order[0] = a, order[1] = b, order[2] = c;
+        taken[std::size_t(a)] = taken[std::size_t(b)] = taken[std::size_t(c)] = true;
+        // Nearest pairs first, so that one loop does not take another's match.
+        std::vector<std::tuple<double, int, int>> pairs;
+        for(int l = 3; l < loops; ++l)
+        {
+          const Vec3 moved = motion.apply(t.loops[std::size_t(l)].centroid.transpose()).row(0).transpose();
+          for(int j = 0; j < loops; ++j)
+            if(!taken[std::size_t(j)] && tag_agrees(t, l, s, j))
+              pairs.emplace_back((moved - s.loops[std::size_t(j)].centroid).norm(), l, j);
+        }
+        std::sort(pairs.begin(), pairs.end());
+        for(const auto& [d, l, j] : pairs)
+          if(order[std::size_t(l)] < 0 && !taken[std::size_t(j)]) order[std::size_t(l)] = j, taken[std::size_t(j)] = true;
+        if(std::find(order.begin(), order.end(), -1) != order.end()) continue;
+        const Point_matrix all_s = centroids(s, order);
+        found.emplace_back(rms(fit_rigid_motion(all_t, all_s).apply(all_t), all_s), order);
+      }
+  std::sort(found.begin(), found.end());
+  found.erase(std::unique(found.begin(), found.end(),
+                          [](const auto& x, const auto& y) { return x.second == y.second; }),
+              found.end());
+  std::vector<std::vector<int>> orders;
+  for(std::size_t k = 0; k < found.size() && k < keep; ++k) orders.push_back(found[k].second);
+  if(orders.empty()) orders.push_back(identity);
+  return orders;
 }
 
 } // namespace
@@ -291,22 +375,26 @@ Landmarks match_landmarks(const Surface& t, const Surface& s, const std::vector<
   }
   else
   {
-    std::vector<int> permutation(loops);
-    std::iota(permutation.begin(), permutation.end(), 0);
-    // Loops come longest first, so without trying all orders (too many)
-    // the length order matches them.
-    const bool all_orders = loops <= 5;
-    bool any_agrees = false;
-    do
-      any_agrees = any_agrees || tags_agree(t, s, permutation);
-    while(all_orders && std::next_permutation(permutation.begin(), permutation.end()));
-    std::iota(permutation.begin(), permutation.end(), 0);
-    do
+    std::vector<std::vector<int>> orders;
+    if(loops <= 5)
     {
-      if(any_agrees && !tags_agree(t, s, permutation)) continue;
+      std::vector<int> permutation(loops);
+      std::iota(permutation.begin(), permutation.end(), 0);
+      do
+        orders.push_back(permutation);
+      while(std::next_permutation(permutation.begin(), permutation.end()));
+      const bool any_agrees = std::any_of(orders.begin(), orders.end(),
+                                          [&](const std::vector<int>& o) { return tags_agree(t, s, o); });
+      if(any_agrees)
+        orders.erase(std::remove_if(orders.begin(), orders.end(),
+                                    [&](const std::vector<int>& o) { return !tags_agree(t, s, o); }),
+                     orders.end());
+    }
+    else
+      orders = likely_loop_orders(t, s, 8);
+    for(const std::vector<int>& order : orders)
       for(int shift = 0; shift < samples; ++shift)
-        candidates.push_back(loop_candidate(permutation, 1, double(shift) / samples, samples, use_tilt));
-    } while(all_orders && std::next_permutation(permutation.begin(), permutation.end()));
+        candidates.push_back(loop_candidate(order, 1, double(shift) / samples, samples, use_tilt));
   }
 
   std::sort(candidates.begin(), candidates.end(),

@@ -154,13 +154,21 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
       a.r.automatic_landmarks = a.lm.automatic;
       const Point_matrix base = a.lm.motion.apply(tmpl.mesh.points);
       Point_matrix coarse;
-      if(options.segments_before_pca > 0 && int(rank) > options.segments_before_pca)
+      const bool use_prior = &tmpl == &t && options.prior.number_of_modes() > 0 &&
+                             options.prior.mean.rows() == tmpl.mesh.points.rows();
+      if(use_prior || (options.segments_before_pca > 0 && int(rank) > options.segments_before_pca))
       {
-        std::vector<Point_matrix> instances;
-        for(std::size_t k = 0; k < rank; ++k) instances.push_back(positions[order[k]]);
-        Shape_space_options so;
-        so.explained_variance = 1.;
-        const Shape_space space = learn_shape_space(instances, so);
+        Shape_space space;
+        if(use_prior)
+          space = options.prior;
+        else
+        {
+          std::vector<Point_matrix> instances;
+          for(std::size_t k = 0; k < rank; ++k) instances.push_back(positions[order[k]]);
+          Shape_space_options so;
+          so.explained_variance = 1.;
+          space = learn_shape_space(instances, so);
+        }
         const Point_matrix start =
           base + fit_spline(a.lm.motion.apply(a.lm.source), a.lm.target - a.lm.motion.apply(a.lm.source), s.diagonal)
                    .displacement(base);

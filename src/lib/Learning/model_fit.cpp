@@ -248,7 +248,9 @@ void correspond_segment(const Morphable_part_model& model, const Model_templates
   pair[1].mesh = segment.mesh;
   pair[1].name = mesh.source + " label " + std::to_string(segment.label);
   pair[1].seam_tags = seam_tags_of(mesh, segment, type_of_label);
-  const Dense_correspondence c = compute_dense_correspondence(pair, type.name, options.correspondence);
+  Dense_correspondence_options correspondence = options.correspondence;
+  correspondence.prior = type.space;
+  const Dense_correspondence c = compute_dense_correspondence(pair, type.name, correspondence);
   const Segment_correspondence& s = c.segments[1];
   fit.corresponded = s.positions;
   fit.coverage_residual = s.residual;

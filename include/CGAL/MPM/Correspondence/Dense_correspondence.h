@@ -5,6 +5,7 @@
 
 #include <CGAL/MPM/Solver/Cancellation.h>
 #include <CGAL/MPM/Indexed_mesh.h>
+#include <CGAL/MPM/Model/Shape_space.h>
 
 #include <functional>
 #include <string>
@@ -41,6 +42,11 @@ struct Dense_correspondence_options
   /// Segments corresponded (with splines) before the PCA space of those
   /// replaces the spline as the coarse regularizer; 0 never uses it.
   int segments_before_pca = 3;
+  /// A learned space of shapes with the first segment's connectivity (a
+  /// model's `Part_type::space`), the coarse regularizer of every other
+  /// segment when it has modes: fitting a new shape into a model follows
+  /// the shapes the model knows. Empty (no modes): not used.
+  Shape_space prior;
   bool refine = true;             ///< run the refinement (paper eq. 4.1-4.2)
   int refinement_iterations = 40; ///< gradient steps of the refinement
   /// Largest move of a vertex per refinement step, as a fraction of its mean
