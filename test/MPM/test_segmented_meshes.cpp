@@ -280,27 +280,29 @@ TEST(Segmented_meshes_untangled, stitched_templates_crossing_at_seams_are_moved_
   EXPECT_LT(relative_hausdorff_distance(l.model.examples.front().mesh, l.input.mesh.mesh), 0.003);
 }
 
-TEST(Segmented_meshes_refused, a_template_twisted_around_thin_arms_is_refused)
+TEST(Segmented_meshes_tubes, thin_arms_are_corresponded_along_the_tube)
 {
+  // octopus_124's arm tips are ten times longer than wide and curl each
+  // its own way: a template placed rigidly and bent by a spline lay twisted
+  // around them (40% of its triangles turned) and every tip kept its own
+  // shape. Placed along the tube (position along the axis, angle about it)
+  // half of them are corresponded (the others crumple it at their tips
+  // and keep their own shapes), and the example still reproduces the input.
   MPM_REQUIRE_PSB(std::string("octopus_124"));
   Training_input input;
   input.mesh = read_labeled_mesh(psb_file("octopus_124.off"), psb_file("octopus_124.seg"));
   input.annotation = propose_part_types(input.mesh).annotation;
-  std::vector<std::string> warnings;
-  Learning_options options;
-  options.warning = [&](const std::string& w) { warnings.push_back(w); };
-  const Morphable_part_model model = learn_morphable_part_model({input}, options);
+  const Morphable_part_model model = learn_morphable_part_model({input}, Learning_options());
   const Indexed_mesh& example = model.examples.front().mesh;
-  EXPECT_LT(relative_hausdorff_distance(example, input.mesh.mesh), 1e-9);
+  EXPECT_LT(relative_hausdorff_distance(example, input.mesh.mesh), 0.005);
   EXPECT_EQ(check_surface(example).self_intersections, 0);
-  EXPECT_EQ(folded_faces(example, input.mesh.mesh).size(), 0u);
-  const auto refused = [&](int label) {
-    return std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) {
-      return w.find("label " + std::to_string(label) + " (type \"tip2\")") != std::string::npos &&
-             w.find("keeps its own shape") != std::string::npos;
-    });
-  };
-  for(int label : {1, 2, 5, 6, 8}) EXPECT_TRUE(refused(label)) << "label " << label;
+  EXPECT_LE(folded_faces(example, input.mesh.mesh).size(), 4u);
+  const int tip = model.find_type("tip2");
+  ASSERT_GE(tip, 0);
+  int tips = 0;
+  for(const Part_node& n : model.examples.front().graph.nodes) tips += n.type == tip;
+  EXPECT_GE(tips, 4);
+  EXPECT_GE(model.types[std::size_t(tip)].space.number_of_modes(), 3);
 }
 
 } // namespace

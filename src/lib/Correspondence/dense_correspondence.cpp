@@ -18,6 +18,10 @@ using internal::percent;
 
 namespace {
 
+// Segments this many times longer (along their axis) than wide (their
+// first loop's radius) are also placed along the tube.
+constexpr double tube_slenderness = 3.;
+
 std::string mirror_warning(const std::string& element, const std::string& segment, const std::string& template_name,
                            double residual, double mirrored_residual)
 {
@@ -147,6 +151,13 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
       Point_matrix y;
       double residual = std::numeric_limits<double>::infinity();
     };
+    const auto finish = [&](Attempt& a, const Template_info& tinfo, const Point_matrix& coarse) {
+      a.y = laplacian_icp(s, tinfo, a.lm, coarse, options, a.r.iterations);
+      std::vector<Vec3> frame;
+      project(s, tinfo, a.lm, a.y, frame);
+      for(const auto& [v, p] : a.lm.vertex_targets) a.y.row(v) = p.transpose();
+      a.residual = coverage_residual(s, a.y, t.mesh.triangles);
+    };
     const auto attempt = [&](const Surface& tmpl, const Template_info& tinfo, bool use_tilt) {
       Attempt a;
       a.r = r;
@@ -177,11 +188,18 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
       }
       else
         coarse = spline_icp(s, tinfo, a.lm, base, options, a.r.iterations);
-      a.y = laplacian_icp(s, tinfo, a.lm, coarse, options, a.r.iterations);
-      std::vector<Vec3> frame;
-      project(s, tinfo, a.lm, a.y, frame);
-      for(const auto& [v, p] : a.lm.vertex_targets) a.y.row(v) = p.transpose();
-      a.residual = coverage_residual(s, a.y, t.mesh.triangles);
+      finish(a, tinfo, coarse);
+      return a;
+    };
+    // A limb bent or curled unlike the template is out of reach of a rigid
+    // start and a spline: the template is also placed along the tube.
+    const auto along_tube = [&](const Surface& tmpl, const Template_info& tinfo, const Attempt& from) {
+      Attempt a;
+      a.r = from.r;
+      a.lm = from.lm;
+      a.r.used_shape_space = false;
+      Point_matrix coarse;
+      if(tube_chart_start(tmpl, s, a.lm, tube_slenderness, coarse)) finish(a, tinfo, coarse);
       return a;
     };
     // The lean of a lone seam is a cue at a mitred joint but arbitrary at a
@@ -196,6 +214,11 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
         other.r.iterations += best.r.iterations;
         if(other.residual < 0.75 * best.residual) best = std::move(other);
       }
+      Attempt tube = along_tube(tmpl, tinfo, best);
+      tube.r.iterations += best.r.iterations;
+      if(tube.residual < best.residual &&
+         flipped_faces(s, tube.y, t.mesh.triangles).size() <= flipped_faces(s, best.y, t.mesh.triangles).size())
+        best = std::move(tube);
       return best;
     };
     Attempt chosen = best_of(t, info);

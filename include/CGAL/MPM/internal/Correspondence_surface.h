@@ -227,6 +227,14 @@ void unfold(const Surface& s, const Template_info& info, const Landmarks& lm, co
 // a chart of a segment with one or two loops.
 void unfold_in_chart(const Surface& s, const Template_info& info, const Landmarks& lm,
                      const std::vector<Triangle>& triangles, Point_matrix& y);
+// The start of correspondence_tube_chart.cpp: the template placed on a
+// segment with one or two loops through a chart along both tubes (position
+// along the axis, angle about it), where the rigid start and a spline
+// cannot follow a bent or curled limb; with one loop the template's tip is
+// pinned on the segment's (a landmark added to `lm`). False (y and lm
+// untouched) unless both are tubes at least `min_slenderness` times longer
+// than wide.
+bool tube_chart_start(const Surface& t, const Surface& s, Landmarks& lm, double min_slenderness, Point_matrix& y);
 void cover_missed_points(const Surface& s, const Template_info& info, const Landmarks& lm,
                          const std::vector<Triangle>& triangles, Point_matrix& y);
 
