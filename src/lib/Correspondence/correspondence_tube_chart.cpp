@@ -112,8 +112,11 @@ private:
         knot_.push_back((k + 0.5) / knots_inside);
         centre_.push_back(sum[std::size_t(k)] / count[std::size_t(k)]);
       }
+    const Vec3 end = other >= 0 ? x.loops[other].centroid : Vec3(x.mesh.points.row(tip_).transpose());
+    // A last slice holding the tip alone would be a second knot on it.
+    while(centre_.size() > 1 && !((centre_.back() - end).norm() > 0)) centre_.pop_back(), knot_.pop_back();
     knot_.push_back(1.);
-    centre_.push_back(other >= 0 ? x.loops[other].centroid : Vec3(x.mesh.points.row(tip_).transpose()));
+    centre_.push_back(end);
     if(knot_.size() < knots_inside / 2) return false;
     double length = 0.;
     for(std::size_t k = 0; k + 1 < centre_.size(); ++k) length += (centre_[k + 1] - centre_[k]).norm();

@@ -245,6 +245,16 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
   {
     progress("refinement of " + type_name, double(m - 1) / m);
     result.refinement_iterations = refine(surfaces, landmarks, info, 0, options, positions, result.before, result.after);
+    // The refinement lowers the spread of the shapes after a rigid
+    // alignment; between a straight and a curled limb it does so by sliding
+    // the template off the curl. A segment it leaves much less covered
+    // keeps its fit.
+    for(std::size_t i = 1; i < m; ++i)
+    {
+      const double before = coverage_residual(*surfaces[i], unrefined[i], result.triangles);
+      if(coverage_residual(*surfaces[i], positions[i], result.triangles) > std::max(1.5 * before, before + 0.002))
+        positions[i] = unrefined[i];
+    }
   }
   else
   {
