@@ -140,7 +140,9 @@ std::vector<std::vector<int>> boundary_loops(const Indexed_mesh& mesh);
 /// arc-length samples of the matched boundary loops with the best cyclic
 /// shift and orientation, the lean of each seam's plane, and the tip of
 /// segments with one loop), then fitted by deformable ICP with a coarse
-/// thin-plate-spline (later: the PCA space of the segments done) and a
+/// thin-plate-spline (later: the PCA space of the segments done, or
+/// `Dense_correspondence_options::prior`; a long tube is also placed along
+/// its axis, which follows a bent or curled limb) and a
 /// Laplacian regularizer, and finally refined by minimizing
 /// `E_boundary + E_sample + trace(Sigma)` with tangent steps projected back
 /// onto each segment. See `doc/MPM/Correspondence.md`.
