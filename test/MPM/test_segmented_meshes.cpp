@@ -305,6 +305,31 @@ TEST(Segmented_meshes_tubes, thin_arms_are_corresponded_along_the_tube)
   EXPECT_GE(model.types[std::size_t(tip)].space.number_of_modes(), 3);
 }
 
+TEST(Segmented_meshes_tubes, arms_in_different_poses_are_corresponded)
+{
+  // octopus_126's eight arms, two pieces each, curl each its own way: every
+  // piece but the templates was refused (6-19% of the template's triangles
+  // turned), and the model had one type with modes. Along the tube all
+  // sixteen pieces are corresponded.
+  MPM_REQUIRE_PSB(std::string("octopus_126"));
+  Training_input input;
+  input.mesh = read_labeled_mesh(psb_file("octopus_126.off"), psb_file("octopus_126.seg"));
+  input.annotation = propose_part_types(input.mesh).annotation;
+  const Morphable_part_model model = learn_morphable_part_model({input}, Learning_options());
+  const Training_example& example = model.examples.front();
+  EXPECT_LT(relative_hausdorff_distance(example.mesh, input.mesh.mesh), 0.005);
+  EXPECT_EQ(check_surface(example.mesh).components, 1);
+  std::map<std::string, int> instances;
+  for(const Part_node& n : example.graph.nodes) ++instances[model.types[std::size_t(n.type)].name];
+  for(const std::string& arm : {"chain1", "tip2"})
+  {
+    EXPECT_EQ(instances[arm], 8) << arm;
+    const int type = model.find_type(arm);
+    ASSERT_GE(type, 0) << arm;
+    EXPECT_GE(model.types[std::size_t(type)].space.number_of_modes(), 3) << arm;
+  }
+}
+
 } // namespace
 
 // Each triangle split into four at its edge midpoints, labels kept: the
