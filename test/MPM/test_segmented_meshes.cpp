@@ -289,14 +289,12 @@ TEST(Segmented_meshes_tubes, thin_arms_are_corresponded_along_the_tube)
   // half of them are corresponded (the others crumple it at their tips
   // and keep their own shapes), and the example still reproduces the input.
   MPM_REQUIRE_PSB(std::string("octopus_124"));
-  Training_input input;
-  input.mesh = read_labeled_mesh(psb_file("octopus_124.off"), psb_file("octopus_124.seg"));
-  input.annotation = propose_part_types(input.mesh).annotation;
-  const Morphable_part_model model = learn_morphable_part_model({input}, Learning_options());
+  const Learned l = learn("octopus_124");
+  const Morphable_part_model& model = l.model;
   const Indexed_mesh& example = model.examples.front().mesh;
-  EXPECT_LT(relative_hausdorff_distance(example, input.mesh.mesh), 0.005);
+  EXPECT_LT(relative_hausdorff_distance(example, l.input.mesh.mesh), 0.005);
   EXPECT_EQ(check_surface(example).self_intersections, 0);
-  EXPECT_LE(folded_faces(example, input.mesh.mesh).size(), 4u);
+  EXPECT_LE(folded_faces(example, l.input.mesh.mesh).size(), 4u);
   const int tip = model.find_type("tip2");
   ASSERT_GE(tip, 0);
   int tips = 0;
@@ -312,12 +310,10 @@ TEST(Segmented_meshes_tubes, arms_in_different_poses_are_corresponded)
   // turned), and the model had one type with modes. Along the tube all
   // sixteen pieces are corresponded.
   MPM_REQUIRE_PSB(std::string("octopus_126"));
-  Training_input input;
-  input.mesh = read_labeled_mesh(psb_file("octopus_126.off"), psb_file("octopus_126.seg"));
-  input.annotation = propose_part_types(input.mesh).annotation;
-  const Morphable_part_model model = learn_morphable_part_model({input}, Learning_options());
+  const Learned l = learn("octopus_126");
+  const Morphable_part_model& model = l.model;
   const Training_example& example = model.examples.front();
-  EXPECT_LT(relative_hausdorff_distance(example.mesh, input.mesh.mesh), 0.005);
+  EXPECT_LT(relative_hausdorff_distance(example.mesh, l.input.mesh.mesh), 0.005);
   EXPECT_EQ(check_surface(example.mesh).components, 1);
   std::map<std::string, int> instances;
   for(const Part_node& n : example.graph.nodes) ++instances[model.types[std::size_t(n.type)].name];

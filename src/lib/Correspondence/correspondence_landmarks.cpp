@@ -33,10 +33,7 @@ bool tags_agree(const Surface& t, const Surface& s, const std::vector<int>& perm
 // the sine of the lean angle.
 Vec3 lean_of(const Loop& l, const Vec3& axis_point, int orientation)
 {
-  Vec3 normal = Vec3::Zero();
-  const Eigen::Index k = l.points.rows();
-  for(Eigen::Index i = 0; i < k; ++i)
-    normal += (l.points.row(i).transpose() - l.centroid).cross(l.points.row((i + 1) % k).transpose() - l.centroid);
+  Vec3 normal = l.area_vector();
   const Vec3 axis = axis_point - l.centroid;
   if(!(normal.norm() > 0) || !(axis.norm() > 0)) return Vec3::Zero();
   normal.normalize();
@@ -53,8 +50,7 @@ Vec3 tilt_point(const Loop& l, const Vec3& axis_point, int orientation)
 {
   const Vec3 lean = lean_of(l, axis_point, orientation);
   if(!(lean.norm() > 1e-6)) return l.centroid;
-  const double radius = (l.points.rowwise() - l.centroid.transpose()).rowwise().norm().mean();
-  return l.centroid + radius * std::min(1., lean.norm() / 0.1) * lean.normalized();
+  return l.centroid + l.mean_radius() * std::min(1., lean.norm() / 0.1) * lean.normalized();
 }
 
 // Where the cap of a one-loop segment turns towards its tip: the line on
@@ -127,14 +123,10 @@ bool tag_agrees(const Surface& t, int l, const Surface& s, int j)
 // carries both points.
 Point_matrix oriented_loop_points(const Loop& l)
 {
-  Vec3 normal = Vec3::Zero();
-  const Eigen::Index k = l.points.rows();
-  for(Eigen::Index i = 0; i < k; ++i)
-    normal += (l.points.row(i).transpose() - l.centroid).cross(l.points.row((i + 1) % k).transpose() - l.centroid);
-  const double radius = (l.points.rowwise() - l.centroid.transpose()).rowwise().norm().mean();
+  const Vec3 normal = l.area_vector();
   Point_matrix p(2, 3);
   p.row(0) = l.centroid.transpose();
-  const Vec3 lift = normal.norm() > 0 ? Vec3(radius * normal.normalized()) : Vec3::Zero();
+  const Vec3 lift = normal.norm() > 0 ? Vec3(l.mean_radius() * normal.normalized()) : Vec3::Zero();
   p.row(1) = (l.centroid + lift).transpose();
   return p;
 }

@@ -150,8 +150,7 @@ Vec3 pole_of(const Surface& s)
   if(!((s.area_centroid - c).norm() > 0)) return s.closest(c); // a flat part: no axis
   const Vec3 axis = (s.area_centroid - c).normalized();
   const Eigen::VectorXd height = (s.mesh.points.rowwise() - c.transpose()) * axis;
-  const double radius = (loop.points.rowwise() - c.transpose()).rowwise().norm().mean();
-  const double top = height.maxCoeff() - 0.2 * radius;
+  const double top = height.maxCoeff() - 0.2 * loop.mean_radius();
   Vec3 sum = Vec3::Zero();
   double area = 0.;
   for(const Triangle& t : s.mesh.triangles)

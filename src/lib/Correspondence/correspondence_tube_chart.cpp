@@ -120,8 +120,7 @@ private:
     if(knot_.size() < knots_inside / 2) return false;
     double length = 0.;
     for(std::size_t k = 0; k + 1 < centre_.size(); ++k) length += (centre_[k + 1] - centre_[k]).norm();
-    const Loop& l = x.loops[first];
-    const double radius = (l.points.rowwise() - l.centroid.transpose()).rowwise().norm().mean();
+    const double radius = x.loops[first].mean_radius();
     slenderness_ = radius > 0 ? length / radius : 0.;
     for(std::size_t k = 0; k < centre_.size(); ++k)
     {

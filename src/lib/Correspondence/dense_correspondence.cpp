@@ -135,6 +135,7 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
 
   std::vector<Landmarks> landmarks(m);
   std::vector<Point_matrix> positions(m);
+  std::vector<double> unrefined_residual(m, 0.);
   positions[0] = t.mesh.points;
   for(std::size_t rank = 1; rank < m; ++rank)
   {
@@ -169,17 +170,16 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
                              options.prior.mean.rows() == tmpl.mesh.points.rows();
       if(use_prior || (options.segments_before_pca > 0 && int(rank) > options.segments_before_pca))
       {
-        Shape_space space;
-        if(use_prior)
-          space = options.prior;
-        else
+        Shape_space learned;
+        if(!use_prior)
         {
           std::vector<Point_matrix> instances;
           for(std::size_t k = 0; k < rank; ++k) instances.push_back(positions[order[k]]);
           Shape_space_options so;
           so.explained_variance = 1.;
-          space = learn_shape_space(instances, so);
+          learned = learn_shape_space(instances, so);
         }
+        const Shape_space& space = use_prior ? options.prior : learned;
         const Point_matrix start =
           base + fit_spline(a.lm.motion.apply(a.lm.source), a.lm.target - a.lm.motion.apply(a.lm.source), s.diagonal)
                    .displacement(base);
@@ -237,6 +237,7 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
     }
     r = chosen.r;
     r.unrefined = positions[i] = chosen.y;
+    unrefined_residual[i] = chosen.residual;
     landmarks[i] = chosen.lm;
   }
 
@@ -251,7 +252,7 @@ Dense_correspondence compute_dense_correspondence(const std::vector<Corresponden
     // keeps its fit.
     for(std::size_t i = 1; i < m; ++i)
     {
-      const double before = coverage_residual(*surfaces[i], unrefined[i], result.triangles);
+      const double before = unrefined_residual[i];
       if(coverage_residual(*surfaces[i], positions[i], result.triangles) > std::max(1.5 * before, before + 0.002))
         positions[i] = unrefined[i];
     }

@@ -58,6 +58,19 @@ struct Loop
   Vec3 centroid = Vec3::Zero();
 
   double length() const { return arc.back(); }
+  // Mean distance of the loop's vertices to its centroid.
+  double mean_radius() const { return (points.rowwise() - centroid.transpose()).rowwise().norm().mean(); }
+  // Sum of the cross products of consecutive vertices about the centroid:
+  // along the loop's normal as its direction gives it (twice its area for
+  // a planar loop).
+  Vec3 area_vector() const
+  {
+    Vec3 sum = Vec3::Zero();
+    const Eigen::Index k = points.rows();
+    for(Eigen::Index i = 0; i < k; ++i)
+      sum += (points.row(i).transpose() - centroid).cross(points.row((i + 1) % k).transpose() - centroid);
+    return sum;
+  }
   double parameter(int k) const { return arc[k] / length(); }
   Vec3 at(double u) const
   {
