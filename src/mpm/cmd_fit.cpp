@@ -89,7 +89,9 @@ Json errors_json(const std::vector<Type_fit_error>& errors)
                  {"rms_over_mesh_diagonal", e.rms_over_mesh_diagonal},
                  {"rms_over_segment_diagonal", e.rms_over_segment_diagonal},
                  {"worst_over_mesh_diagonal", e.worst_over_mesh_diagonal},
-                 {"worst_coverage_residual", e.worst_coverage_residual}});
+                 {"worst_coverage_residual", e.worst_coverage_residual},
+                 {"segment_to_fit_over_mesh_diagonal", e.segment_to_fit_over_mesh_diagonal},
+                 {"worst_segment_to_fit_over_mesh_diagonal", e.worst_segment_to_fit_over_mesh_diagonal}});
   return a;
 }
 
@@ -108,6 +110,7 @@ Json fit_json(const Morphable_part_model& model, const Model_fit& fit)
                         {"rms", s.rms},
                         {"rms_over_segment_diagonal", s.rms_over_segment_diagonal},
                         {"rms_over_mesh_diagonal", s.rms_over_mesh_diagonal},
+                        {"segment_to_fit_over_mesh_diagonal", s.segment_to_fit_over_mesh_diagonal},
                         {"coverage_residual", s.coverage_residual},
                         {"mirrored", s.mirrored},
                         {"flipped_faces", s.flipped_faces}});
@@ -126,14 +129,15 @@ std::string percent(double fraction) { return format_number(100. * fraction, 3);
 void print_fit(std::ostream& out, const Morphable_part_model& model, const Model_fit& fit)
 {
   Table table({"label", "type", "chosen by", "loops", "vertices", "coverage %", "RMS % segment", "RMS % mesh",
-               "coordinates (sigmas)"},
-              {true, false, false, true, true, true, true, true, false});
+               "segment to fit % mesh", "coordinates (sigmas)"},
+              {true, false, false, true, true, true, true, true, true, false});
   for(const Segment_fit& s : fit.segments)
     table.add_row({std::to_string(s.label), model.types[std::size_t(s.type)].name,
                    s.type_source == Fit_type_source::annotation ? "annotation" : "seams and size",
                    std::to_string(s.seam_loops), std::to_string(s.corresponded.rows()),
                    s.known_correspondence ? "known" : percent(s.coverage_residual), percent(s.rms_over_segment_diagonal),
-                   percent(s.rms_over_mesh_diagonal), coordinates_text(s.coordinates_in_sigmas)});
+                   percent(s.rms_over_mesh_diagonal), percent(s.segment_to_fit_over_mesh_diagonal),
+                   coordinates_text(s.coordinates_in_sigmas)});
   table.print(out);
   Table types({"type", "segments", "RMS % mesh", "RMS % segment", "worst % mesh"}, {false, true, true, true, true});
   for(const Type_fit_error& e : fit.errors_by_type(model))
@@ -170,6 +174,7 @@ Model_fit_options fit_options(const Args& args, Context& context, std::vector<st
   o.correspondence.refine = !args.flag("no-refine");
   o.correspondence.refinement_iterations =
     static_cast<int>(args.integer("refinement-iterations", o.correspondence.refinement_iterations));
+  o.surface_iterations = static_cast<int>(args.integer("surface-iterations", o.surface_iterations));
   o.progress = [&](const std::string& stage, double fraction) { context.progress.update(stage, fraction); };
   o.warning = [&](const std::string& w) {
     warnings.push_back(w);
@@ -282,16 +287,20 @@ int run_leave_one_out(const Args& args, Context& context)
   std::cout << "Leave-one-out over " << files.size() << " meshes: each learned from the others, then fitted\n\n";
   table.print(std::cout);
   for(const std::string& s : skipped) std::cout << "  skipped: " << s << "\n";
-  Table types({"type", "segments", "RMS % mesh", "RMS % segment", "worst % mesh", "worst coverage %"},
-              {false, true, true, true, true, true});
+  Table types({"type", "segments", "RMS % mesh", "RMS % segment", "worst % mesh", "segment to fit RMS % mesh",
+               "worst segment to fit % mesh", "worst coverage %"},
+              {false, true, true, true, true, true, true, true});
   for(const Type_fit_error& e : pooled)
     types.add_row({e.name, std::to_string(e.segments), percent(e.rms_over_mesh_diagonal),
                    percent(e.rms_over_segment_diagonal), percent(e.worst_over_mesh_diagonal),
+                   percent(e.segment_to_fit_over_mesh_diagonal), percent(e.worst_segment_to_fit_over_mesh_diagonal),
                    percent(e.worst_coverage_residual)});
-  // The RMS is against the corresponded positions: a correspondence that
-  // misses the segment (coverage) makes it say little.
-  std::cout << "\nPer part type, over all held-out meshes (worst coverage: how far the segment lies from the "
-               "template put on it, % of the segment's diagonal)\n";
+  // The RMS is against the template's vertices on the segment: a fit that
+  // covers only part of the segment (segment to fit) or a correspondence
+  // that misses it (coverage) makes it say little.
+  std::cout << "\nPer part type, over all held-out meshes (segment to fit: RMS distance of the segment's "
+               "vertices to the fitted surface; worst coverage: how far the segment lies from the template put on "
+               "it, % of the segment's diagonal)\n";
   types.print(std::cout);
   return exit_ok;
 }
@@ -325,11 +334,13 @@ Command make_fit_command()
     "it; else the type with as many seam loops and the closest area and loop lengths.\n"
     "The type's template (its mean shape) is put on the segment by dense\n"
     "correspondence and fitted into the type's shape space (rigid alignment and\n"
-    "projection onto the modes). Prints per segment the shape coordinates (in\n"
-    "standard deviations) and the RMS distance between the corresponded and the\n"
-    "fitted points, over the segment's and over the mesh's bounding-box diagonal,\n"
-    "and per type the RMS. -o writes the fitted parts (PLY faces coloured by type),\n"
-    "one separate piece per segment.\n\n"
+    "projection onto the modes), then closer to the segment's surface by closest-point\n"
+    "steps. Prints per segment the shape coordinates (in standard deviations), the\n"
+    "RMS distance between the template's vertices on the segment and the fitted\n"
+    "points, over the segment's and over the mesh's bounding-box diagonal, the RMS\n"
+    "distance of the segment's vertices to the fitted surface, and per type the RMS.\n"
+    "-o writes the fitted parts (PLY faces coloured by type), one separate piece per\n"
+    "segment.\n\n"
     "--leave-one-out learns from all meshes but one, fits that one (segments that\n"
     "cannot be fitted are skipped and listed) and repeats for each mesh (or only\n"
     "--held-out K): the RMS per type says how well a model of this kind generalizes.\n"
@@ -345,6 +356,9 @@ Command make_fit_command()
      "dense correspondence even for segments with their type's connectivity"},
     {"no-refine", 0, Value_kind::flag, "", "", "skip the correspondence refinement (trace(Sigma) minimization)"},
     {"refinement-iterations", 0, Value_kind::integer, "N", "40", "gradient steps of the refinement", 0, INT_MAX},
+    {"surface-iterations", 0, Value_kind::integer, "N", "10",
+     "closest-point steps fitting the shape space to the segment's surface (0: to the corresponded vertices)", 0,
+     INT_MAX},
     {"leave-one-out", 0, Value_kind::flag, "", "", "positionals are meshes: learn from all but one, fit that one"},
     {"held-out", 0, Value_kind::integer, "K", "each in turn", "with --leave-one-out: hold out only mesh K (from 0)",
      0, INT_MAX},

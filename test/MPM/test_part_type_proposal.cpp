@@ -244,6 +244,33 @@ Labeled_mesh small_hand()
   return make_synthetic_model(Synthetic_family::hand, o).mesh;
 }
 
+TEST(Proposal, OctopusArmPiecesOfDifferentSizeAreNotPooled)
+{
+  // By position, every arm's first segment is `chain1`. octopus_124's are
+  // thin rings by the body (20-28 faces), octopus_126's halves of arms
+  // (430-1,020 faces), octopus_137's in between with four rings of its own:
+  // pooled, the rings of both meshes share one name and no ring shares one
+  // with an arm half.
+  MPM_REQUIRE_PSB("octopus_124");
+  std::vector<Labeled_mesh> octopuses;
+  for(const char* name : {"octopus_124", "octopus_126", "octopus_137"}) octopuses.push_back(read_psb(name));
+  const std::vector<Part_type_proposal> p = propose_part_types(octopuses);
+  std::map<std::string, std::vector<int>> faces_of_type;
+  for(const Part_type_proposal& q : p)
+    for(const Segment_proposal& s : q.segments)
+      if(s.depth == 1 && s.seam_loops == 2) faces_of_type[s.type].push_back(s.faces);
+  for(const auto& [type, faces] : faces_of_type)
+  {
+    const auto [smallest, largest] = std::minmax_element(faces.begin(), faces.end());
+    std::cout << "  " << type << ": " << faces.size() << " segments, " << *smallest << "-" << *largest << " faces\n";
+    EXPECT_LT(*largest, 10 * *smallest) << type;
+  }
+  ASSERT_TRUE(faces_of_type.count("chain1_small"));
+  EXPECT_EQ(faces_of_type.at("chain1_small").size(), 9u);
+  // One mesh alone is named as before.
+  EXPECT_EQ(propose_part_types(octopuses[0]).instances_of_type().count("chain1_small"), 0u);
+}
+
 } // namespace
 
 TEST(Bad_segmentation, DisconnectedSegmentIsNamed)

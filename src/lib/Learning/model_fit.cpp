@@ -6,6 +6,7 @@
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Correspondence_surface.h>
 
 #include <algorithm>
 #include <chrono>
@@ -263,13 +264,25 @@ void correspond_segment(const Morphable_part_model& model, const Model_templates
   }
 }
 
-// Rigid alignment and projection onto the modes; the residual is what the
-// learned space cannot express.
-void fit_shape_space(const Part_type& type, double mesh_diagonal, Segment_fit& fit)
+// Distances of the segment's vertices to the fitted surface: what the fit
+// leaves uncovered (a fit that shrank onto part of the segment).
+double segment_to_fit_rms(const Segment& segment, const Point_matrix& fitted, const std::vector<Triangle>& triangles)
+{
+  namespace C = internal::correspondence;
+  std::vector<C::Kernel::Triangle_3> faces;
+  for(const Triangle& t : triangles)
+    faces.emplace_back(C::to_point(fitted.row(t[0])), C::to_point(fitted.row(t[1])), C::to_point(fitted.row(t[2])));
+  const C::Triangle_tree tree(faces.begin(), faces.end());
+  double squared = 0.;
+  for(Eigen::Index j = 0; j < segment.mesh.points.rows(); ++j)
+    squared += tree.squared_distance(C::to_point(segment.mesh.points.row(j)));
+  return std::sqrt(squared / double(std::max<Eigen::Index>(1, segment.mesh.points.rows())));
+}
+
+// The fit's residuals, in mesh units and over the diagonals.
+void measure_fit(const Part_type& type, const Segment& segment, double mesh_diagonal, Segment_fit& fit)
 {
   const Shape_space& space = type.space;
-  space.fit(fit.corresponded, fit.coordinates, fit.motion);
-  fit.fitted = fit.motion.apply(space.shape(fit.coordinates));
   fit.coordinates_in_sigmas = Eigen::VectorXd::Zero(fit.coordinates.size());
   for(Eigen::Index k = 0; k < fit.coordinates.size(); ++k)
     if(space.sigmas(k) > 0) fit.coordinates_in_sigmas(k) = fit.coordinates(k) / space.sigmas(k);
@@ -277,6 +290,85 @@ void fit_shape_space(const Part_type& type, double mesh_diagonal, Segment_fit& f
   fit.rms = (fit.fitted - fit.corresponded).norm() / std::sqrt(double(n));
   fit.rms_over_segment_diagonal = fit.segment_diagonal > 0 ? fit.rms / fit.segment_diagonal : 0.;
   fit.rms_over_mesh_diagonal = mesh_diagonal > 0 ? fit.rms / mesh_diagonal : 0.;
+  const double back = segment_to_fit_rms(segment, fit.fitted, type.triangles);
+  fit.segment_to_fit_over_mesh_diagonal = mesh_diagonal > 0 ? back / mesh_diagonal : 0.;
+}
+
+// Where each of `from`'s points has its nearest point among `to`'s rows.
+std::vector<int> nearest_rows(const Point_matrix& from, const Point_matrix& to)
+{
+  std::vector<int> nearest(std::size_t(from.rows()), 0);
+  for(Eigen::Index j = 0; j < from.rows(); ++j)
+    (to.rowwise() - from.row(j)).rowwise().squaredNorm().minCoeff(&nearest[std::size_t(j)]);
+  return nearest;
+}
+
+// The dense correspondence put the template on the segment without the
+// type's shape space; among the placements of the template's vertices on
+// the segment, the model explains some better than others (a template slid
+// along a tube covers it as well). Alternating closest points on the
+// segment (its own seam for a seam vertex; pulled toward segment vertices
+// no template vertex is nearest to, so that the fit cannot shrink onto
+// part of the segment) and the shape space fit is the iterative closest
+// point fit of a morphable model: each step lowers the distance between
+// the model's shape and the surface it was fitted to.
+void fit_on_surface(const Part_type& type, const Segment& segment, int iterations, Segment_fit& fit)
+{
+  namespace C = internal::correspondence;
+  const C::Surface surface(segment.mesh, type.name, "segment " + std::to_string(segment.label));
+  Indexed_mesh template_mesh;
+  template_mesh.points = type.space.mean;
+  template_mesh.triangles = type.triangles;
+  std::vector<int> loop_of(std::size_t(fit.corresponded.rows()), -1);
+  for(const std::vector<int>& loop : C::loops_of(template_mesh))
+    for(int v : loop)
+    {
+      const C::Vec3 p = fit.corresponded.row(v).transpose();
+      double best = std::numeric_limits<double>::infinity();
+      for(std::size_t l = 0; l < surface.loops.size(); ++l)
+      {
+        const double d = (surface.closest_on_loop(int(l), p) - p).squaredNorm();
+        if(d < best) best = d, loop_of[std::size_t(v)] = int(l);
+      }
+    }
+  const Eigen::Index n = fit.corresponded.rows();
+  double previous = (fit.fitted - fit.corresponded).norm();
+  for(int it = 0; it < iterations; ++it)
+  {
+    Point_matrix closest(n, 3);
+    for(Eigen::Index v = 0; v < n; ++v)
+    {
+      const C::Vec3 p = fit.fitted.row(v).transpose();
+      const int l = loop_of[std::size_t(v)];
+      closest.row(v) = (l >= 0 ? surface.closest_on_loop(l, p) : surface.closest(p)).transpose();
+    }
+    Point_matrix target = closest;
+    Eigen::VectorXd count = Eigen::VectorXd::Ones(n);
+    const std::vector<int> nearest = nearest_rows(segment.mesh.points, fit.fitted);
+    for(std::size_t j = 0; j < nearest.size(); ++j)
+      if(loop_of[std::size_t(nearest[j])] < 0)
+        target.row(nearest[j]) += segment.mesh.points.row(Eigen::Index(j)), count(nearest[j]) += 1.;
+    target.array().colwise() /= count.array();
+    Eigen::VectorXd coordinates;
+    Rigid_motion motion;
+    type.space.fit(target, coordinates, motion);
+    const Point_matrix fitted = motion.apply(type.space.shape(coordinates));
+    Point_matrix on_surface(n, 3);
+    for(Eigen::Index v = 0; v < n; ++v)
+    {
+      const C::Vec3 p = fitted.row(v).transpose();
+      const int l = loop_of[std::size_t(v)];
+      on_surface.row(v) = (l >= 0 ? surface.closest_on_loop(l, p) : surface.closest(p)).transpose();
+    }
+    const double distance = (fitted - on_surface).norm();
+    if(!(distance < previous)) break;
+    fit.fitted = fitted;
+    fit.corresponded = on_surface;
+    fit.coordinates = coordinates;
+    fit.motion = motion;
+    if(distance > previous * (1 - 1e-3)) break;
+    previous = distance;
+  }
 }
 
 // The labels to fit, checked against the mesh.
@@ -346,7 +438,11 @@ Model_fit fit_morphable_part_model(const Morphable_part_model& model, const Labe
     fit.seam_loops = templates.signatures[std::size_t(choice.type)].loops;
     fit.segment_diagonal = internal::bounding_box_diagonal(segments.at(label).mesh.points);
     correspond_segment(model, templates, mesh, segments.at(label), type_of_label, options, fit, result.warnings);
-    fit_shape_space(type, result.mesh_diagonal, fit);
+    type.space.fit(fit.corresponded, fit.coordinates, fit.motion);
+    fit.fitted = fit.motion.apply(type.space.shape(fit.coordinates));
+    if(!fit.known_correspondence && options.surface_iterations > 0)
+      fit_on_surface(type, segments.at(label), options.surface_iterations, fit);
+    measure_fit(type, segments.at(label), result.mesh_diagonal, fit);
     squared += (fit.fitted - fit.corresponded).squaredNorm();
     points += fit.corresponded.rows();
     result.segments.push_back(std::move(fit));
@@ -394,12 +490,16 @@ std::vector<Type_fit_error> Model_fit::errors_by_type(const Morphable_part_model
     e.rms_over_segment_diagonal += s.rms_over_segment_diagonal * s.rms_over_segment_diagonal;
     e.worst_over_mesh_diagonal = std::max(e.worst_over_mesh_diagonal, s.rms_over_mesh_diagonal);
     e.worst_coverage_residual = std::max(e.worst_coverage_residual, s.coverage_residual);
+    e.segment_to_fit_over_mesh_diagonal += s.segment_to_fit_over_mesh_diagonal * s.segment_to_fit_over_mesh_diagonal;
+    e.worst_segment_to_fit_over_mesh_diagonal =
+        std::max(e.worst_segment_to_fit_over_mesh_diagonal, s.segment_to_fit_over_mesh_diagonal);
   }
   std::vector<Type_fit_error> errors;
   for(auto& [type, e] : by_type)
   {
     e.rms_over_mesh_diagonal = std::sqrt(e.rms_over_mesh_diagonal / e.segments);
     e.rms_over_segment_diagonal = std::sqrt(e.rms_over_segment_diagonal / e.segments);
+    e.segment_to_fit_over_mesh_diagonal = std::sqrt(e.segment_to_fit_over_mesh_diagonal / e.segments);
     errors.push_back(e);
   }
   return errors;
@@ -421,15 +521,20 @@ std::vector<Type_fit_error> pool_type_fit_errors(const std::vector<std::vector<T
       // Weighted by segment count: squares of RMS values are means of squares.
       it->rms_over_mesh_diagonal += e.segments * e.rms_over_mesh_diagonal * e.rms_over_mesh_diagonal;
       it->rms_over_segment_diagonal += e.segments * e.rms_over_segment_diagonal * e.rms_over_segment_diagonal;
+      it->segment_to_fit_over_mesh_diagonal +=
+          e.segments * e.segment_to_fit_over_mesh_diagonal * e.segment_to_fit_over_mesh_diagonal;
       it->segments += e.segments;
       it->worst_over_mesh_diagonal = std::max(it->worst_over_mesh_diagonal, e.worst_over_mesh_diagonal);
       it->worst_coverage_residual = std::max(it->worst_coverage_residual, e.worst_coverage_residual);
+      it->worst_segment_to_fit_over_mesh_diagonal =
+          std::max(it->worst_segment_to_fit_over_mesh_diagonal, e.worst_segment_to_fit_over_mesh_diagonal);
     }
   for(Type_fit_error& p : pooled)
     if(p.segments > 0)
     {
       p.rms_over_mesh_diagonal = std::sqrt(p.rms_over_mesh_diagonal / p.segments);
       p.rms_over_segment_diagonal = std::sqrt(p.rms_over_segment_diagonal / p.segments);
+      p.segment_to_fit_over_mesh_diagonal = std::sqrt(p.segment_to_fit_over_mesh_diagonal / p.segments);
     }
   return pooled;
 }

@@ -4,6 +4,7 @@
 // Part types proposed from a segmentation (segment graph, seam loops, size)
 // and the checks a real segmentation must pass before correspondence.
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Message_text.h>
 
@@ -196,38 +197,45 @@ std::string position_name(const Segment_proposal& s, int root, const std::map<in
   return name;
 }
 
+// A segment of a class with its area as compared: scaled to the first
+// mesh's size, so that one mesh of a pooled set scanned at another scale does
+// not split a class by itself.
+struct Class_member
+{
+  Segment_proposal* segment = nullptr;
+  double area = 0.;
+};
+
 // Splits `members` (sorted by area) recursively at the largest consecutive
 // area ratio while the spread exceeds `ratio`; appends the groups in area order.
-void split_by_area(const std::vector<const Segment_proposal*>& members, double ratio,
-                   std::vector<std::vector<const Segment_proposal*>>& groups)
+void split_by_area(const std::vector<Class_member>& members, double ratio, std::vector<std::vector<Class_member>>& groups)
 {
-  if(members.size() < 2 || members.back()->area <= ratio * members.front()->area)
+  if(members.size() < 2 || members.back().area <= ratio * members.front().area)
   {
     groups.push_back(members);
     return;
   }
   std::size_t cut = 1;
   for(std::size_t i = 1; i < members.size(); ++i)
-    if(members[i]->area / members[i - 1]->area > members[cut]->area / members[cut - 1]->area) cut = i;
+    if(members[i].area / members[i - 1].area > members[cut].area / members[cut - 1].area) cut = i;
   split_by_area({members.begin(), members.begin() + std::ptrdiff_t(cut)}, ratio, groups);
   split_by_area({members.begin() + std::ptrdiff_t(cut), members.end()}, ratio, groups);
 }
 
-std::string area_range(const std::vector<const Segment_proposal*>& g)
+std::string area_range(const std::vector<Class_member>& g)
 {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, g.size() == 1 ? "%.3g" : "%.3g-%.3g", g.front()->area, g.back()->area);
+  std::snprintf(buffer, sizeof buffer, g.size() == 1 ? "%.3g" : "%.3g-%.3g", g.front().area, g.back().area);
   return buffer;
 }
 
 // Gives the class `name` its final names: the biggest size group keeps it.
-void name_size_groups(const std::string& name, std::vector<const Segment_proposal*> members, double ratio,
-                      std::map<int, Segment_proposal>& segments)
+void name_size_groups(const std::string& name, std::vector<Class_member> members, double ratio)
 {
-  std::sort(members.begin(), members.end(), [](const Segment_proposal* a, const Segment_proposal* b) {
-    return a->area < b->area || (a->area == b->area && a->label < b->label);
+  std::sort(members.begin(), members.end(), [](const Class_member& a, const Class_member& b) {
+    return a.area < b.area || (a.area == b.area && a.segment->label < b.segment->label);
   });
-  std::vector<std::vector<const Segment_proposal*>> groups;
+  std::vector<std::vector<Class_member>> groups;
   split_by_area(members, ratio, groups);
   std::size_t main = 0;
   for(std::size_t g = 1; g < groups.size(); ++g)
@@ -242,12 +250,70 @@ void name_size_groups(const std::string& name, std::vector<const Segment_proposa
       reason = "area " + area_range(groups[g]) + " against " + area_range(groups[main]) + " for the other " +
                std::to_string(groups[main].size()) + " of " + name;
     }
-    for(const Segment_proposal* s : groups[g])
+    for(const Class_member& m : groups[g])
     {
-      segments[s->label].type = type;
-      segments[s->label].reason = reason;
+      m.segment->reason += std::string(m.segment->reason.empty() || reason.empty() ? "" : "; ") + reason;
+      m.segment->type = type;
     }
   }
+}
+
+// One mesh's segments named by their position in its segment graph.
+struct Positioned_segments
+{
+  std::map<int, Segment_proposal> segments;
+  std::vector<int> order; // breadth-first
+  int root = -1;
+  double diagonal = 0.;
+};
+
+Positioned_segments position_segments(const Labeled_mesh& mesh)
+{
+  validate_segmentation(mesh);
+  Positioned_segments p;
+  p.segments = measure_segments(mesh);
+  p.order = breadth_first(mesh, p.segments, p.root);
+  // Parents before children, for the prefixes.
+  for(int label : p.order)
+  {
+    Segment_proposal& s = p.segments[label];
+    s.type = position_name(s, p.root, p.segments);
+  }
+  p.diagonal = internal::bounding_box_diagonal(mesh.mesh.points);
+  return p;
+}
+
+// Where segments of one position name have different seam-loop counts in
+// different meshes, those whose count differs from the first seen get `_sN`.
+void separate_seam_counts(std::vector<Positioned_segments>& meshes)
+{
+  std::map<std::string, int> loops_of_type;
+  for(Positioned_segments& m : meshes)
+    for(int label : m.order)
+    {
+      Segment_proposal& s = m.segments[label];
+      const auto seen = loops_of_type.emplace(s.type, s.seam_loops).first;
+      if(seen->second == s.seam_loops) continue;
+      s.reason = std::to_string(s.seam_loops) + " seam loops where " + s.type + " has " +
+                 std::to_string(seen->second) + " in an earlier mesh";
+      s.type += "_s" + std::to_string(s.seam_loops);
+    }
+}
+
+Part_type_proposal proposal_of(Positioned_segments& m)
+{
+  Part_type_proposal r;
+  r.root = m.root;
+  for(int label : m.order)
+  {
+    r.segments.push_back(m.segments[label]);
+    r.annotation.part_type_of_label[label] = m.segments[label].type;
+  }
+  // Rows a reader can scan: level by level, each type's segments together.
+  std::stable_sort(r.segments.begin(), r.segments.end(), [](const Segment_proposal& a, const Segment_proposal& b) {
+    return std::tie(a.depth, a.type, a.label) < std::tie(b.depth, b.type, b.label);
+  });
+  return r;
 }
 
 } // namespace
@@ -261,51 +327,41 @@ std::map<std::string, int> Part_type_proposal::instances_of_type() const
 
 Part_type_proposal propose_part_types(const Labeled_mesh& mesh, const Part_type_proposal_options& options)
 {
-  validate_segmentation(mesh);
-  std::map<int, Segment_proposal> segments = measure_segments(mesh);
-  Part_type_proposal r;
-  const std::vector<int> order = breadth_first(mesh, segments, r.root);
-  // Names by position first (parents before children, for the prefixes),
-  // then the size split within each name.
-  std::map<std::string, std::vector<const Segment_proposal*>> classes;
-  for(int label : order)
-  {
-    Segment_proposal& s = segments[label];
-    s.type = position_name(s, r.root, segments);
-    classes[s.type].push_back(&s);
-  }
-  for(const auto& [name, members] : classes) name_size_groups(name, members, options.max_area_ratio, segments);
-  for(int label : order)
-  {
-    r.segments.push_back(segments[label]);
-    r.annotation.part_type_of_label[label] = segments[label].type;
-  }
-  // Rows a reader can scan: level by level, each type's segments together.
-  std::stable_sort(r.segments.begin(), r.segments.end(), [](const Segment_proposal& a, const Segment_proposal& b) {
-    return std::tie(a.depth, a.type, a.label) < std::tie(b.depth, b.type, b.label);
-  });
-  return r;
+  return propose_part_types(std::vector<Labeled_mesh>{mesh}, options).front();
 }
 
 std::vector<Part_type_proposal> propose_part_types(const std::vector<Labeled_mesh>& meshes,
                                                    const Part_type_proposal_options& options)
 {
-  std::vector<Part_type_proposal> r;
-  std::map<std::string, int> loops_of_type; // as first seen
-  for(const Labeled_mesh& m : meshes)
+  std::vector<Positioned_segments> positioned;
+  for(const Labeled_mesh& m : meshes) positioned.push_back(position_segments(m));
+  separate_seam_counts(positioned);
+  // The size split runs within each mesh, then over each name's segments of
+  // all meshes at once with the square of the ratio, so that a name means
+  // segments of one size in every mesh without splitting a kind whose size
+  // varies from one body to the next (one person cuts an octopus arm at a
+  // thin ring by the body, another at half its length: both are `chain1` by
+  // position).
+  std::map<std::string, std::vector<Class_member>> pooled;
+  for(Positioned_segments& m : positioned)
   {
-    r.push_back(propose_part_types(m, options));
-    for(Segment_proposal& s : r.back().segments)
+    const double scale = positioned.front().diagonal / m.diagonal;
+    const double area_scale = std::isfinite(scale) && scale > 0 ? scale * scale : 1.;
+    std::map<std::string, std::vector<Class_member>> classes;
+    for(int label : m.order)
     {
-      const auto seen = loops_of_type.emplace(s.type, s.seam_loops).first;
-      if(seen->second == s.seam_loops) continue;
-      const std::string renamed = s.type + "_s" + std::to_string(s.seam_loops);
-      s.reason += std::string(s.reason.empty() ? "" : "; ") + std::to_string(s.seam_loops) + " seam loops where " +
-                  s.type + " has " + std::to_string(seen->second) + " in an earlier mesh";
-      s.type = renamed;
-      r.back().annotation.part_type_of_label[s.label] = renamed;
+      Segment_proposal& s = m.segments[label];
+      classes[s.type].push_back({&s, s.area * area_scale});
     }
+    for(const auto& [name, members] : classes) name_size_groups(name, members, options.max_area_ratio);
+    for(const auto& [name, members] : classes)
+      for(const Class_member& member : members) pooled[member.segment->type].push_back(member);
   }
+  if(positioned.size() > 1)
+    for(const auto& [name, members] : pooled)
+      name_size_groups(name, members, options.max_area_ratio * options.max_area_ratio);
+  std::vector<Part_type_proposal> r;
+  for(Positioned_segments& m : positioned) r.push_back(proposal_of(m));
   return r;
 }
 

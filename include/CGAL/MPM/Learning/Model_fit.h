@@ -43,6 +43,10 @@ struct Model_fit_options
   bool use_known_correspondence = true;
   /// Options of the dense correspondence of a segment with its type's template.
   Dense_correspondence_options correspondence;
+  /// Steps of the closest-point fit of the shape space to the segment's
+  /// surface after the dense correspondence; 0 fits the corresponded
+  /// vertices as they are.
+  int surface_iterations = 10;
   /// Called with a stage name and the fraction done (0..1).
   std::function<void(const std::string& stage, double fraction)> progress;
   /// Called with each warning (also collected in `Model_fit::warnings`).
@@ -71,6 +75,10 @@ struct Segment_fit
   double segment_diagonal = 0.;   ///< bounding-box diagonal of the segment
   double rms_over_segment_diagonal = 0.; ///< `rms / segment_diagonal`
   double rms_over_mesh_diagonal = 0.;    ///< `rms` over the whole mesh's bounding-box diagonal
+  /// RMS distance from the segment's vertices to the fitted surface (`fitted`
+  /// with the type's triangles) over the mesh's diagonal: large when the fit
+  /// leaves part of the segment uncovered.
+  double segment_to_fit_over_mesh_diagonal = 0.;
   /// How well the mapped template covers the segment
   /// (`Segment_correspondence::residual`, over the segment's diagonal); 0
   /// in known correspondence.
@@ -102,7 +110,12 @@ struct Type_fit_error
   /// The same with each segment's error over its own diagonal.
   double rms_over_segment_diagonal = 0.;
   double worst_over_mesh_diagonal = 0.; ///< largest `Segment_fit::rms_over_mesh_diagonal`
+  /// RMS of the segments' `Segment_fit::segment_to_fit_over_mesh_diagonal`
+  /// (segments of one type differ in vertex count: each counts once).
+  double segment_to_fit_over_mesh_diagonal = 0.;
   double worst_coverage_residual = 0.;  ///< largest `Segment_fit::coverage_residual`
+  /// Largest `Segment_fit::segment_to_fit_over_mesh_diagonal`.
+  double worst_segment_to_fit_over_mesh_diagonal = 0.;
 };
 
 /// \ingroup PkgMPMRef
@@ -145,7 +158,17 @@ struct Model_fit
 ///   the type's own connectivity keeps its vertices (known correspondence).
 /// - **Shape space fit.** Rigid alignment and orthogonal projection onto the
 ///   type's modes (`Shape_space::fit()`), so the residual is what the
-///   learned space cannot express.
+///   learned space cannot express. The correspondence placed the template
+///   without the type's space, and a template slid along the segment covers
+///   it as well: `Model_fit_options::surface_iterations` closest-point steps
+///   then move the template's vertices on the segment's surface (a seam
+///   vertex on its own seam) toward the fitted shape and fit again, each
+///   target also pulled toward the segment vertices nearest to it so that
+///   the fit cannot shrink onto part of the segment; a step is kept while
+///   the distance between the fitted shape and its closest points falls.
+///   `Segment_fit::corresponded` are then those closest points, and
+///   `Segment_fit::segment_to_fit_over_mesh_diagonal` says how far the
+///   segment's own vertices lie from the fit.
 ///
 /// Throws `Input_error` naming `mesh.source` and the segment for a type the
 /// model does not know, a segment whose seam-loop count no type has or

@@ -97,11 +97,20 @@ Part_type_proposal propose_part_types(const Labeled_mesh& mesh,
                                       const Part_type_proposal_options& options = Part_type_proposal_options());
 
 /// \ingroup PkgMPMRef
-/// Proposes part types for each mesh, then makes the names agree across
-/// meshes: where segments of one name have different seam-loop counts in
-/// different meshes (two roots with 5 and 6 seams), those whose count
-/// differs from the first mesh's get `_sN` appended, so that every type of
-/// the pooled training set can be put in correspondence.
+/// Proposes part types for several meshes of a kind at once, so that a name
+/// means the same kind of segment in every mesh:
+/// - where segments of one position name have different seam-loop counts in
+///   different meshes (two roots with 5 and 6 seams), those whose count
+///   differs from the first mesh's get `_sN` appended;
+/// - after the size split within each mesh, the segments of each name in
+///   all meshes are split again the same way with the square of
+///   `max_area_ratio` (sizes vary more from one body and one person's cuts
+///   to the next than within a body), each area scaled by the square of the
+///   first mesh's bounding-box diagonal over its own mesh's (meshes scanned
+///   at different scales): one person cuts an octopus arm at a thin ring by
+///   the body, another at half its length, and both are `chain1` by position.
+///
+/// One mesh gets the names of the overload for one mesh.
 std::vector<Part_type_proposal> propose_part_types(const std::vector<Labeled_mesh>& meshes,
                                                    const Part_type_proposal_options& options =
                                                      Part_type_proposal_options());
