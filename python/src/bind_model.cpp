@@ -116,6 +116,7 @@ py::dict segment_fit_dict(const Morphable_part_model& model, const Segment_fit& 
   d["rms"] = s.rms;
   d["rms_over_segment_diagonal"] = s.rms_over_segment_diagonal;
   d["rms_over_mesh_diagonal"] = s.rms_over_mesh_diagonal;
+  d["segment_to_fit_over_mesh_diagonal"] = s.segment_to_fit_over_mesh_diagonal;
   d["coverage_residual"] = s.coverage_residual;
   d["mirrored"] = s.mirrored;
   d["flipped_faces"] = s.flipped_faces;
@@ -133,7 +134,8 @@ py::dict model_fit_dict(const Morphable_part_model& model, const Model_fit& fit)
                            py::arg("rms_over_mesh_diagonal") = e.rms_over_mesh_diagonal,
                            py::arg("rms_over_segment_diagonal") = e.rms_over_segment_diagonal,
                            py::arg("worst_over_mesh_diagonal") = e.worst_over_mesh_diagonal,
-                           py::arg("worst_coverage_residual") = e.worst_coverage_residual));
+                           py::arg("worst_coverage_residual") = e.worst_coverage_residual,
+                           py::arg("segment_to_fit_over_mesh_diagonal") = e.segment_to_fit_over_mesh_diagonal));
   Labeled_mesh surface = fit.fitted_surface(model);
   return py::dict(py::arg("segments") = segments, py::arg("skipped") = skipped, py::arg("errors_by_type") = errors,
                   py::arg("mesh_diagonal") = fit.mesh_diagonal,
@@ -242,11 +244,13 @@ Releases the GIL while learning. Returns a Model.)doc");
 
 Each segment gets a part type (the annotation's, or the type with as many
 seam loops and the closest size), its type's template put on it by dense
-correspondence, and its shape-space coordinates. segments: labels to fit
+correspondence and slid over the segment's surface toward the shape its
+space fits, and its shape-space coordinates. segments: labels to fit
 (default: all). skip_unfittable: list segments that cannot be fitted in
 "skipped" instead of raising InputError.
 Returns {"segments": per segment dicts (label, type, coordinates,
-coordinates_in_sigmas, motion, corresponded, fitted, rms, ...), "skipped",
+coordinates_in_sigmas, motion, corresponded, fitted, rms,
+segment_to_fit_over_mesh_diagonal, ...), "skipped",
 "errors_by_type", "mesh_diagonal", "rms_over_mesh_diagonal", "warnings",
 "fitted_surface": (V, F, labels)}.)doc");
 }
