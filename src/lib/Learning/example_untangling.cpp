@@ -3,11 +3,17 @@
 #include <CGAL/MPM/internal/Example_untangling.h>
 
 #include <CGAL/MPM/Editing/Surface_soundness.h>
+#include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
+#include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <map>
@@ -20,8 +26,17 @@ namespace internal {
 namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
+// Crossings are decided by exact predicates, as `self_intersecting_faces()`
+// decides them: with rounded ones, faces meeting at a shallow angle along an
+// edge are reported as crossing.
+using Exact_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Exact_kernel::Point_3>;
+using Face = Mesh::Face_index;
 using Triangle_iterator = std::vector<Kernel::Triangle_3>::const_iterator;
 using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangle_iterator>>>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+Kernel::Point_3 point_of(const Point_matrix& p, Eigen::Index v) { return {p(v, 0), p(v, 1), p(v, 2)}; }
 
 // The input's faces of one label, to project onto.
 struct Label_surface
@@ -33,13 +48,12 @@ struct Label_surface
 std::map<int, Label_surface> surfaces_by_label(const Labeled_mesh& input)
 {
   std::map<int, Label_surface> surfaces;
-  const auto point = [&](int v) {
-    return Kernel::Point_3(input.mesh.points(v, 0), input.mesh.points(v, 1), input.mesh.points(v, 2));
-  };
   for(std::size_t f = 0; f < input.mesh.triangles.size(); ++f)
   {
     const Triangle& t = input.mesh.triangles[f];
-    surfaces[input.face_labels[f]].triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
+    surfaces[input.face_labels[f]].triangles.emplace_back(point_of(input.mesh.points, t[0]),
+                                                          point_of(input.mesh.points, t[1]),
+                                                          point_of(input.mesh.points, t[2]));
   }
   for(auto& [label, s] : surfaces)
   {
@@ -49,20 +63,121 @@ std::map<int, Label_surface> surfaces_by_label(const Labeled_mesh& input)
   return surfaces;
 }
 
-int crossing_pairs(const Indexed_mesh& mesh, std::vector<int>* faces = nullptr)
+// Whether a face of the example lies turned over on the input, as
+// `folded_faces()` says, with the input's tree built once.
+class Fold_test
 {
-  std::vector<std::pair<int, int>> pairs;
-  if(!self_intersecting_faces(mesh, pairs)) return -1;
-  if(faces)
+public:
+  explicit Fold_test(const Mesh& input) : input_(input), tree_(faces(input_).first, faces(input_).second, input_)
   {
-    faces->clear();
-    for(const auto& [a, b] : pairs)
-    {
-      faces->push_back(a);
-      faces->push_back(b);
-    }
+    tree_.accelerate_distance_queries();
   }
-  return int(pairs.size());
+  bool folded(const Mesh& mesh, Face f) const
+  {
+    const auto corners = CGAL::vertices_around_face(mesh.halfedge(f), mesh);
+    auto c = corners.begin();
+    const Mesh::Point &a = mesh.point(*c), &b = mesh.point(*++c), &d = mesh.point(*++c);
+    const Mesh::Point centroid = CGAL::centroid(a, b, d);
+    const Face nearest = tree_.closest_point_and_primitive(centroid).second;
+    return CGAL::cross_product(b - a, d - a) * PMP::compute_face_normal(nearest, input_) < 0.;
+  }
+
+private:
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  const Mesh& input_;
+  CGAL::AABB_tree<CGAL::AABB_traits<Exact_kernel, Primitive>> tree_;
+};
+
+// The example as a halfedge mesh whose points are changed in place for
+// each trial, so that crossings and folds are counted only where a trial
+// moves vertices: among the faces whose boxes meet those it touches.
+class Trial_mesh
+{
+public:
+  Trial_mesh(Mesh mesh, const Fold_test& folds) : mesh_(std::move(mesh)), folds_(folds) {}
+
+  std::vector<std::pair<int, int>> crossing_pairs() const
+  {
+    std::vector<std::pair<Face, Face>> found;
+    PMP::self_intersections(mesh_, std::back_inserter(found));
+    std::vector<std::pair<int, int>> pairs;
+    for(const auto& [f, g] : found) pairs.emplace_back(int(f), int(g));
+    return pairs;
+  }
+
+  // Moves `moved` to `positions` if that lowers the crossings near them
+  // without folding more faces over the input; returns whether it did.
+  bool try_move(const std::vector<int>& moved, const Point_matrix& positions)
+  {
+    std::vector<Mesh::Point> before;
+    for(int v : moved) before.push_back(mesh_.point(Mesh::Vertex_index(v)));
+    std::vector<Face> touched;
+    for(int v : moved)
+      for(Face f : CGAL::faces_around_target(mesh_.halfedge(Mesh::Vertex_index(v)), mesh_))
+        if(f != Mesh::null_face()) touched.push_back(f);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    // The faces that can cross a touched face, before or after the move.
+    set_points(moved, positions);
+    CGAL::Bbox_3 box = box_of(touched);
+    for(std::size_t i = 0; i < moved.size(); ++i) mesh_.point(Mesh::Vertex_index(moved[i])) = before[i];
+    box += box_of(touched);
+    std::vector<Face> near;
+    for(Face f : faces(mesh_))
+      if(CGAL::do_overlap(box, box_of({f}))) near.push_back(f);
+    const auto state = [&](int& crossings, int& folded) {
+      std::vector<std::pair<Face, Face>> found;
+      PMP::self_intersections(near, mesh_, std::back_inserter(found));
+      crossings = int(found.size());
+      folded = 0;
+      for(Face f : touched) folded += folds_.folded(mesh_, f);
+    };
+    int crossings_before = 0, folded_before = 0, crossings_after = 0, folded_after = 0;
+    state(crossings_before, folded_before);
+    set_points(moved, positions);
+    state(crossings_after, folded_after);
+    if(crossings_after < crossings_before && folded_after <= folded_before) return true;
+    for(std::size_t i = 0; i < moved.size(); ++i) mesh_.point(Mesh::Vertex_index(moved[i])) = before[i];
+    return false;
+  }
+
+private:
+  void set_points(const std::vector<int>& moved, const Point_matrix& positions)
+  {
+    for(int v : moved) mesh_.point(Mesh::Vertex_index(v)) = Mesh::Point(positions(v, 0), positions(v, 1), positions(v, 2));
+  }
+
+  CGAL::Bbox_3 box_of(const std::vector<Face>& faces) const
+  {
+    CGAL::Bbox_3 box;
+    for(Face f : faces)
+      for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_)) box += mesh_.point(v).bbox();
+    return box;
+  }
+
+  Mesh mesh_;
+  const Fold_test& folds_;
+};
+
+// The vertices of `faces` and `rings` rings around them that are inside a
+// part (`label` >= 0).
+std::vector<int> vertices_around(const Indexed_mesh& mesh, std::initializer_list<int> faces, int rings,
+                                 const std::vector<std::vector<int>>& next, const std::vector<int>& label)
+{
+  std::vector<bool> within(label.size(), false);
+  for(int face : faces)
+    for(int v : mesh.triangles[std::size_t(face)]) within[std::size_t(v)] = true;
+  for(int r = 0; r < rings; ++r)
+  {
+    const std::vector<bool> before = within;
+    for(std::size_t v = 0; v < label.size(); ++v)
+      if(before[v])
+        for(int w : next[v]) within[std::size_t(w)] = true;
+  }
+  std::vector<int> vertices;
+  for(std::size_t v = 0; v < label.size(); ++v)
+    if(within[v] && label[v] >= 0) vertices.push_back(int(v));
+  return vertices;
 }
 
 } // namespace
@@ -70,10 +185,23 @@ int crossing_pairs(const Indexed_mesh& mesh, std::vector<int>* faces = nullptr)
 Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
                                  const Labeled_mesh& input)
 {
-  std::vector<int> crossing;
-  int best = crossing_pairs(mesh, &crossing);
-  const int own = std::max(crossing_pairs(input.mesh), 0);
-  if(best <= own) return {};
+  Mesh example, input_mesh;
+  try
+  {
+    example = to_surface_mesh_of<Exact_kernel::Point_3>(mesh, "learned example", "untangling");
+    input_mesh = to_surface_mesh_of<Exact_kernel::Point_3>(input.mesh, input.source, "untangling");
+  }
+  catch(const Input_error&)
+  {
+    return {};
+  }
+  const Fold_test folds(input_mesh);
+  Trial_mesh trial(std::move(example), folds);
+  std::vector<std::pair<Face, Face>> own_pairs;
+  PMP::self_intersections(input_mesh, std::back_inserter(own_pairs));
+  const int own = int(own_pairs.size());
+  std::vector<std::pair<int, int>> crossing = trial.crossing_pairs();
+  if(int(crossing.size()) <= own) return {};
   // Each vertex's label; -1 on a seam (faces of two labels), where it stays:
   // a seam vertex moved would be merged anew when the model is learned
   // again, and the dockings it changed folded an ant's legs when
@@ -89,50 +217,52 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
     next[std::size_t(e.target)].push_back(e.source);
   }
   const std::map<int, Label_surface> surfaces = surfaces_by_label(input);
-  const std::size_t folded = folded_faces(mesh, input.mesh).size();
   // A vertex inside a part to the mean of its neighbours, back onto its
-  // part of the input.
+  // part of the input. The seam splits the triangles along it into fans,
+  // so a vertex next to a seam has many seam neighbours close together:
+  // they count as one, or the mean would pull it onto the seam, where the
+  // fan's slivers fold.
   const auto move_to_neighbours = [&](std::size_t v, Point_matrix& points) {
     const auto s = surfaces.find(label[v]);
     if(s == surfaces.end() || next[v].empty()) return;
-    Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-    for(int w : next[v]) mean += points.row(w);
-    mean /= double(next[v].size());
+    Eigen::RowVector3d inside = Eigen::RowVector3d::Zero(), seam = Eigen::RowVector3d::Zero();
+    int inside_count = 0, seam_count = 0;
+    for(int w : next[v])
+    {
+      if(label[std::size_t(w)] == -1) seam += points.row(w), ++seam_count;
+      else inside += points.row(w), ++inside_count;
+    }
+    const Eigen::RowVector3d mean =
+      (inside + (seam_count ? Eigen::RowVector3d(seam / seam_count) : Eigen::RowVector3d::Zero())) /
+      double(inside_count + (seam_count ? 1 : 0));
     const Kernel::Point_3 q = s->second.tree->closest_point(Kernel::Point_3(mean[0], mean[1], mean[2]));
     points.row(Eigen::Index(v)) << q.x(), q.y(), q.z();
   };
-  Indexed_mesh best_mesh = mesh;
+  Point_matrix points = mesh.points;
   bool improved = false;
-  int rings = 1;
-  for(int pass = 0; pass < 12 && best > own; ++pass)
+  // Each crossing pair on its own, the moved region grown ring by ring
+  // until a move lowers the crossings around it: a move that helps one
+  // place is not held back by another place it does not reach.
+  for(int pass = 0; pass < 6 && int(crossing.size()) > own; ++pass)
   {
-    std::vector<bool> moving(label.size(), false);
-    for(int f : crossing)
-      for(int v : mesh.triangles[std::size_t(f)]) moving[std::size_t(v)] = true;
-    for(int r = 0; r < rings; ++r)
-    {
-      const std::vector<bool> before = moving;
-      for(std::size_t v = 0; v < label.size(); ++v)
-        if(before[v])
-          for(int w : next[v]) moving[std::size_t(w)] = true;
-    }
-    Indexed_mesh candidate = best_mesh;
-    for(int sweep = 0; sweep < 5; ++sweep)
-      for(std::size_t v = 0; v < label.size(); ++v)
-        if(moving[v]) move_to_neighbours(v, candidate.points);
-    std::vector<int> now;
-    const int count = crossing_pairs(candidate, &now);
-    if(count >= 0 && count < best && folded_faces(candidate, input.mesh).size() <= folded)
-    {
-      best = count;
-      best_mesh = std::move(candidate);
-      crossing = std::move(now);
-      improved = true;
-    }
-    else
-      rings = std::min(rings + 1, 6);
+    bool moved_any = false;
+    for(const auto& [f, g] : crossing)
+      for(int rings = 0; rings <= 4; ++rings)
+      {
+        const std::vector<int> moved = vertices_around(mesh, {f, g}, rings, next, label);
+        if(moved.empty()) continue;
+        Point_matrix candidate = points;
+        for(int sweep = 0; sweep < 5; ++sweep)
+          for(int v : moved) move_to_neighbours(std::size_t(v), candidate);
+        if(!trial.try_move(moved, candidate)) continue;
+        for(int v : moved) points.row(v) = candidate.row(v);
+        moved_any = improved = true;
+        break;
+      }
+    if(!moved_any) break;
+    crossing = trial.crossing_pairs();
   }
-  return improved ? best_mesh.points : Point_matrix();
+  return improved ? points : Point_matrix();
 }
 
 } // namespace internal
