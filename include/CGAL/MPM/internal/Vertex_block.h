@@ -4,6 +4,7 @@
 #define CGAL_MPM_INTERNAL_VERTEX_BLOCK_H
 
 #include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/internal/Ldlt_row_solve.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -147,9 +148,12 @@ public:
   }
 
   // Columns are independent triangular solves: on large meshes they run in
-  // parallel, which is most of the cost of a displayed frame.
+  // parallel, which is most of the cost of a displayed frame. An LDLT factor
+  // carries all columns through one pass over it (`ldlt_solve_rows()`).
   Eigen::MatrixXd solve_factored(const Eigen::MatrixXd& b) const override
   {
+    if constexpr(std::is_same_v<typename SolverTraits::Solver, Eigen::SimplicialLDLT<Sparse>>)
+      return ldlt_solve_rows(traits_.solver(), b);
 #ifdef CGAL_LINKED_WITH_TBB
     if(b.rows() > 20000 && b.cols() > 1)
     {
