@@ -312,6 +312,27 @@ std::string psb_dir()
   return dir && *dir ? dir : MPM_PSB_DIR;
 }
 
+// The first of `names` whose mesh is not in the PSB directory, or empty.
+std::string missing_psb_mesh(const std::vector<std::string>& names)
+{
+  for(const std::string& name : names)
+    if(!std::filesystem::is_regular_file(psb_dir() + "/" + name + ".off")) return psb_dir() + "/" + name + ".off";
+  return {};
+}
+
+// The PSB meshes `names` with the part types proposed for them together, as
+// `mpm fit --leave-one-out` gives them.
+std::vector<Training_input> psb_inputs_with_proposed_types(const std::vector<std::string>& names)
+{
+  std::vector<Labeled_mesh> meshes;
+  for(const std::string& name : names)
+    meshes.push_back(read_labeled_mesh(psb_dir() + "/" + name + ".off", psb_dir() + "/" + name + ".seg"));
+  const std::vector<Part_type_proposal> proposals = propose_part_types(meshes);
+  std::vector<Training_input> inputs(names.size());
+  for(std::size_t i = 0; i < names.size(); ++i) inputs[i] = {meshes[i], proposals[i].annotation};
+  return inputs;
+}
+
 TEST(Model_fit, psb_hand_leave_one_out)
 {
   // hand_190 held out, the model learned from the other four hands with
@@ -323,16 +344,10 @@ TEST(Model_fit, psb_hand_leave_one_out)
   // from three or four instances. The bounds are the 1% for the
   // types with at least four instances.
   const std::vector<std::string> names = {"hand_181", "hand_190", "hand_194", "hand_196", "hand_197"};
-  for(const std::string& name : names)
-    if(!std::filesystem::is_regular_file(psb_dir() + "/" + name + ".off"))
-      GTEST_SKIP() << psb_dir() << "/" << name << ".off not found: the segmented PSB meshes are not there (set "
-                   << "MPM_PSB_DIR to their directory)";
-  std::vector<Labeled_mesh> meshes;
-  for(const std::string& name : names)
-    meshes.push_back(read_labeled_mesh(psb_dir() + "/" + name + ".off", psb_dir() + "/" + name + ".seg"));
-  const std::vector<Part_type_proposal> proposals = propose_part_types(meshes);
-  std::vector<Training_input> inputs(names.size());
-  for(std::size_t i = 0; i < names.size(); ++i) inputs[i] = {meshes[i], proposals[i].annotation};
+  const std::string missing = missing_psb_mesh(names);
+  if(!missing.empty())
+    GTEST_SKIP() << missing << " not found: the segmented PSB meshes are not there (set MPM_PSB_DIR to their directory)";
+  const std::vector<Training_input> inputs = psb_inputs_with_proposed_types(names);
   Model_fit_options options;
   options.skip_unfittable = true; // a palm of a seam count no other hand has
   const Leave_one_out_fit r = fit_held_out_input(inputs, 1, Learning_options(), options);
@@ -365,16 +380,10 @@ TEST(Model_fit, psb_ant_leave_one_out_fits_the_surface)
   // too (head 1.77% -> 1.04%): the fit covers the segment, it has not shrunk
   // onto part of it.
   const std::vector<std::string> names = {"ant_81", "ant_83", "ant_90", "ant_97"};
-  for(const std::string& name : names)
-    if(!std::filesystem::is_regular_file(psb_dir() + "/" + name + ".off"))
-      GTEST_SKIP() << psb_dir() << "/" << name << ".off not found: the segmented PSB meshes are not there (set "
-                   << "MPM_PSB_DIR to their directory)";
-  std::vector<Labeled_mesh> meshes;
-  for(const std::string& name : names)
-    meshes.push_back(read_labeled_mesh(psb_dir() + "/" + name + ".off", psb_dir() + "/" + name + ".seg"));
-  const std::vector<Part_type_proposal> proposals = propose_part_types(meshes);
-  std::vector<Training_input> inputs(names.size());
-  for(std::size_t i = 0; i < names.size(); ++i) inputs[i] = {meshes[i], proposals[i].annotation};
+  const std::string missing = missing_psb_mesh(names);
+  if(!missing.empty())
+    GTEST_SKIP() << missing << " not found: the segmented PSB meshes are not there (set MPM_PSB_DIR to their directory)";
+  const std::vector<Training_input> inputs = psb_inputs_with_proposed_types(names);
   Model_fit_options options;
   options.skip_unfittable = true;
   const Leave_one_out_fit r = fit_held_out_input(inputs, 2, Learning_options(), options);
