@@ -307,11 +307,11 @@ std::vector<int> nearest_rows(const Point_matrix& from, const Point_matrix& to)
 // type's shape space; among the placements of the template's vertices on
 // the segment, the model explains some better than others (a template slid
 // along a tube covers it as well). Alternating closest points on the
-// segment (its own seam for a seam vertex; pulled toward segment vertices
-// no template vertex is nearest to, so that the fit cannot shrink onto
-// part of the segment) and the shape space fit is the iterative closest
-// point fit of a morphable model: each step lowers the distance between
-// the model's shape and the surface it was fitted to.
+// segment (its own seam for a seam vertex; each target also pulled toward
+// the segment vertices nearest to its vertex, so that the fit cannot
+// shrink onto part of the segment) and the shape space fit is the
+// iterative closest point fit of a morphable model: a step is kept while
+// it lowers the distance between the model's shape and the surface.
 void fit_on_surface(const Part_type& type, const Segment& segment, int iterations, Segment_fit& fit)
 {
   namespace C = internal::correspondence;
@@ -332,17 +332,20 @@ void fit_on_surface(const Part_type& type, const Segment& segment, int iteration
       }
     }
   const Eigen::Index n = fit.corresponded.rows();
-  double previous = (fit.fitted - fit.corresponded).norm();
-  for(int it = 0; it < iterations; ++it)
-  {
+  const auto closest_on_segment = [&](const Point_matrix& points) {
     Point_matrix closest(n, 3);
     for(Eigen::Index v = 0; v < n; ++v)
     {
-      const C::Vec3 p = fit.fitted.row(v).transpose();
+      const C::Vec3 p = points.row(v).transpose();
       const int l = loop_of[std::size_t(v)];
       closest.row(v) = (l >= 0 ? surface.closest_on_loop(l, p) : surface.closest(p)).transpose();
     }
-    Point_matrix target = closest;
+    return closest;
+  };
+  double previous = (fit.fitted - fit.corresponded).norm();
+  for(int it = 0; it < iterations; ++it)
+  {
+    Point_matrix target = closest_on_segment(fit.fitted);
     Eigen::VectorXd count = Eigen::VectorXd::Ones(n);
     const std::vector<int> nearest = nearest_rows(segment.mesh.points, fit.fitted);
     for(std::size_t j = 0; j < nearest.size(); ++j)
@@ -353,13 +356,7 @@ void fit_on_surface(const Part_type& type, const Segment& segment, int iteration
     Rigid_motion motion;
     type.space.fit(target, coordinates, motion);
     const Point_matrix fitted = motion.apply(type.space.shape(coordinates));
-    Point_matrix on_surface(n, 3);
-    for(Eigen::Index v = 0; v < n; ++v)
-    {
-      const C::Vec3 p = fitted.row(v).transpose();
-      const int l = loop_of[std::size_t(v)];
-      on_surface.row(v) = (l >= 0 ? surface.closest_on_loop(l, p) : surface.closest(p)).transpose();
-    }
+    const Point_matrix on_surface = closest_on_segment(fitted);
     const double distance = (fitted - on_surface).norm();
     if(!(distance < previous)) break;
     fit.fitted = fitted;
