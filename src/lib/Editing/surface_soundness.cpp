@@ -5,6 +5,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Fold_test.h>
 #include <CGAL/MPM/internal/Target_unfolding.h>
 
 #include <Eigen/Geometry>
@@ -151,19 +152,44 @@ std::vector<int> inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& re
   return inverted;
 }
 
+namespace internal {
+
+struct Fold_test::Impl
+{
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  explicit Impl(const Indexed_mesh& surface)
+    : target(surface_mesh_of(surface)), tree(faces(target).first, faces(target).second, target)
+  {
+  }
+  Mesh target;
+  CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree;
+};
+
+Fold_test::Fold_test(const Indexed_mesh& surface) : impl_(std::make_unique<Impl>(surface)) {}
+
+Fold_test::~Fold_test() = default;
+
+bool Fold_test::folded(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) const
+{
+  const Eigen::Vector3d centroid = (a + b + c) / 3.;
+  const Mesh::Face_index nearest =
+    impl_->tree.closest_point_and_primitive(Point_3(centroid[0], centroid[1], centroid[2])).second;
+  const Kernel::Vector_3 n = PMP::compute_face_normal(nearest, impl_->target);
+  return (b - a).cross(c - a).dot(Eigen::Vector3d(n.x(), n.y(), n.z())) < 0.;
+}
+
+} // namespace internal
+
 std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surface)
 {
-  const Mesh target = surface_mesh_of(surface);
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  const CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree(faces(target).first, faces(target).second, target);
+  const internal::Fold_test test(surface);
   std::vector<int> folded;
   for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
   {
     const Triangle& t = mesh.triangles[f];
-    const Eigen::RowVector3d c = (mesh.points.row(t[0]) + mesh.points.row(t[1]) + mesh.points.row(t[2])) / 3.;
-    const Mesh::Face_index nearest = tree.closest_point_and_primitive(Point_3(c[0], c[1], c[2])).second;
-    const Kernel::Vector_3 n = PMP::compute_face_normal(nearest, target);
-    if(normal_of(mesh, t).dot(Eigen::Vector3d(n.x(), n.y(), n.z())) < 0.) folded.push_back(int(f));
+    if(test.folded(mesh.points.row(t[0]).transpose(), mesh.points.row(t[1]).transpose(),
+                   mesh.points.row(t[2]).transpose()))
+      folded.push_back(int(f));
   }
   return folded;
 }

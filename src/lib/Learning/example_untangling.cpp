@@ -5,13 +5,12 @@
 #include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
+#include <CGAL/MPM/internal/Fold_test.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -63,31 +62,6 @@ std::map<int, Label_surface> surfaces_by_label(const Labeled_mesh& input)
   return surfaces;
 }
 
-// Whether a face of the example lies turned over on the input, as
-// `folded_faces()` says, with the input's tree built once.
-class Fold_test
-{
-public:
-  explicit Fold_test(const Mesh& input) : input_(input), tree_(faces(input_).first, faces(input_).second, input_)
-  {
-    tree_.accelerate_distance_queries();
-  }
-  bool folded(const Mesh& mesh, Face f) const
-  {
-    const auto corners = CGAL::vertices_around_face(mesh.halfedge(f), mesh);
-    auto c = corners.begin();
-    const Mesh::Point &a = mesh.point(*c), &b = mesh.point(*++c), &d = mesh.point(*++c);
-    const Mesh::Point centroid = CGAL::centroid(a, b, d);
-    const Face nearest = tree_.closest_point_and_primitive(centroid).second;
-    return CGAL::cross_product(b - a, d - a) * PMP::compute_face_normal(nearest, input_) < 0.;
-  }
-
-private:
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  const Mesh& input_;
-  CGAL::AABB_tree<CGAL::AABB_traits<Exact_kernel, Primitive>> tree_;
-};
-
 // The example as a halfedge mesh whose points are changed in place for
 // each trial, so that crossings and folds are counted only where a trial
 // moves vertices: among the faces whose boxes meet those it touches.
@@ -120,7 +94,7 @@ public:
     // The faces that can cross a touched face, before or after the move.
     set_points(moved, positions);
     CGAL::Bbox_3 box = box_of(touched);
-    for(std::size_t i = 0; i < moved.size(); ++i) mesh_.point(Mesh::Vertex_index(moved[i])) = before[i];
+    restore(moved, before);
     box += box_of(touched);
     std::vector<Face> near;
     for(Face f : faces(mesh_))
@@ -130,14 +104,14 @@ public:
       PMP::self_intersections(near, mesh_, std::back_inserter(found));
       crossings = int(found.size());
       folded = 0;
-      for(Face f : touched) folded += folds_.folded(mesh_, f);
+      for(Face f : touched) folded += is_folded(f);
     };
     int crossings_before = 0, folded_before = 0, crossings_after = 0, folded_after = 0;
     state(crossings_before, folded_before);
     set_points(moved, positions);
     state(crossings_after, folded_after);
     if(crossings_after < crossings_before && folded_after <= folded_before) return true;
-    for(std::size_t i = 0; i < moved.size(); ++i) mesh_.point(Mesh::Vertex_index(moved[i])) = before[i];
+    restore(moved, before);
     return false;
   }
 
@@ -145,6 +119,23 @@ private:
   void set_points(const std::vector<int>& moved, const Point_matrix& positions)
   {
     for(int v : moved) mesh_.point(Mesh::Vertex_index(v)) = Mesh::Point(positions(v, 0), positions(v, 1), positions(v, 2));
+  }
+
+  void restore(const std::vector<int>& moved, const std::vector<Mesh::Point>& before)
+  {
+    for(std::size_t i = 0; i < moved.size(); ++i) mesh_.point(Mesh::Vertex_index(moved[i])) = before[i];
+  }
+
+  bool is_folded(Face f) const
+  {
+    Eigen::Vector3d corner[3];
+    int k = 0;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_))
+    {
+      const Mesh::Point& p = mesh_.point(v);
+      corner[k++] = Eigen::Vector3d(p.x(), p.y(), p.z());
+    }
+    return folds_.folded(corner[0], corner[1], corner[2]);
   }
 
   CGAL::Bbox_3 box_of(const std::vector<Face>& faces) const
@@ -185,21 +176,19 @@ std::vector<int> vertices_around(const Indexed_mesh& mesh, std::initializer_list
 Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
                                  const Labeled_mesh& input)
 {
-  Mesh example, input_mesh;
+  Mesh example;
   try
   {
     example = to_surface_mesh_of<Exact_kernel::Point_3>(mesh, "learned example", "untangling");
-    input_mesh = to_surface_mesh_of<Exact_kernel::Point_3>(input.mesh, input.source, "untangling");
   }
   catch(const Input_error&)
   {
     return {};
   }
-  const Fold_test folds(input_mesh);
+  const Fold_test folds(input.mesh);
   Trial_mesh trial(std::move(example), folds);
-  std::vector<std::pair<Face, Face>> own_pairs;
-  PMP::self_intersections(input_mesh, std::back_inserter(own_pairs));
-  const int own = int(own_pairs.size());
+  std::vector<std::pair<int, int>> own_pairs;
+  const int own = self_intersecting_faces(input.mesh, own_pairs) ? int(own_pairs.size()) : 0;
   std::vector<std::pair<int, int>> crossing = trial.crossing_pairs();
   if(int(crossing.size()) <= own) return {};
   // Each vertex's label; -1 on a seam (faces of two labels), where it stays:

@@ -8,11 +8,17 @@
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Correspondence_surface.h>
 
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <sstream>
 
 namespace CGAL {
@@ -297,9 +303,23 @@ void measure_fit(const Part_type& type, const Segment& segment, double mesh_diag
 // Where each of `from`'s points has its nearest point among `to`'s rows.
 std::vector<int> nearest_rows(const Point_matrix& from, const Point_matrix& to)
 {
+  using Kernel = internal::correspondence::Kernel;
+  using Point_map = CGAL::Pointer_property_map<Kernel::Point_3>::type;
+  using Traits = CGAL::Search_traits_adapter<int, Point_map, CGAL::Search_traits_3<Kernel>>;
+  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  std::vector<Kernel::Point_3> points;
+  for(Eigen::Index v = 0; v < to.rows(); ++v) points.push_back(internal::correspondence::to_point(to.row(v)));
+  std::vector<int> indices(points.size());
+  std::iota(indices.begin(), indices.end(), 0);
+  const Point_map point_map = CGAL::make_property_map(points);
+  const Search::Tree tree(indices.begin(), indices.end(), Search::Tree::Splitter(), Traits(point_map));
   std::vector<int> nearest(std::size_t(from.rows()), 0);
   for(Eigen::Index j = 0; j < from.rows(); ++j)
-    (to.rowwise() - from.row(j)).rowwise().squaredNorm().minCoeff(&nearest[std::size_t(j)]);
+  {
+    const Search search(tree, internal::correspondence::to_point(from.row(j)), 1, 0., true,
+                        Search::Distance(point_map));
+    nearest[std::size_t(j)] = search.begin()->first;
+  }
   return nearest;
 }
 
@@ -312,13 +332,11 @@ std::vector<int> nearest_rows(const Point_matrix& from, const Point_matrix& to)
 // shrink onto part of the segment) and the shape space fit is the
 // iterative closest point fit of a morphable model: a step is kept while
 // it lowers the distance between the model's shape and the surface.
-void fit_on_surface(const Part_type& type, const Segment& segment, int iterations, Segment_fit& fit)
+void fit_on_surface(const Part_type& type, const Indexed_mesh& template_mesh, const Segment& segment, int iterations,
+                    Segment_fit& fit)
 {
   namespace C = internal::correspondence;
   const C::Surface surface(segment.mesh, type.name, "segment " + std::to_string(segment.label));
-  Indexed_mesh template_mesh;
-  template_mesh.points = type.space.mean;
-  template_mesh.triangles = type.triangles;
   std::vector<int> loop_of(std::size_t(fit.corresponded.rows()), -1);
   for(const std::vector<int>& loop : C::loops_of(template_mesh))
     for(int v : loop)
@@ -438,7 +456,8 @@ Model_fit fit_morphable_part_model(const Morphable_part_model& model, const Labe
     type.space.fit(fit.corresponded, fit.coordinates, fit.motion);
     fit.fitted = fit.motion.apply(type.space.shape(fit.coordinates));
     if(!fit.known_correspondence && options.surface_iterations > 0)
-      fit_on_surface(type, segments.at(label), options.surface_iterations, fit);
+      fit_on_surface(type, templates.meshes[std::size_t(choice.type)], segments.at(label), options.surface_iterations,
+                     fit);
     measure_fit(type, segments.at(label), result.mesh_diagonal, fit);
     squared += (fit.fitted - fit.corresponded).squaredNorm();
     points += fit.corresponded.rows();

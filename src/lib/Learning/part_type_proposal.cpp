@@ -325,16 +325,13 @@ std::map<std::string, int> Part_type_proposal::instances_of_type() const
   return r;
 }
 
-Part_type_proposal propose_part_types(const Labeled_mesh& mesh, const Part_type_proposal_options& options)
-{
-  return propose_part_types(std::vector<Labeled_mesh>{mesh}, options).front();
-}
+namespace {
 
-std::vector<Part_type_proposal> propose_part_types(const std::vector<Labeled_mesh>& meshes,
-                                                   const Part_type_proposal_options& options)
+std::vector<Part_type_proposal> propose_for(const std::vector<const Labeled_mesh*>& meshes,
+                                            const Part_type_proposal_options& options)
 {
   std::vector<Positioned_segments> positioned;
-  for(const Labeled_mesh& m : meshes) positioned.push_back(position_segments(m));
+  for(const Labeled_mesh* m : meshes) positioned.push_back(position_segments(*m));
   separate_seam_counts(positioned);
   // The size split runs within each mesh, then over each name's segments of
   // all meshes at once with the square of the ratio, so that a name means
@@ -363,6 +360,21 @@ std::vector<Part_type_proposal> propose_part_types(const std::vector<Labeled_mes
   std::vector<Part_type_proposal> r;
   for(Positioned_segments& m : positioned) r.push_back(proposal_of(m));
   return r;
+}
+
+} // namespace
+
+Part_type_proposal propose_part_types(const Labeled_mesh& mesh, const Part_type_proposal_options& options)
+{
+  return propose_for({&mesh}, options).front();
+}
+
+std::vector<Part_type_proposal> propose_part_types(const std::vector<Labeled_mesh>& meshes,
+                                                   const Part_type_proposal_options& options)
+{
+  std::vector<const Labeled_mesh*> pointers;
+  for(const Labeled_mesh& m : meshes) pointers.push_back(&m);
+  return propose_for(pointers, options);
 }
 
 void validate_segmentation(const Labeled_mesh& lm)

@@ -4,6 +4,7 @@
 #define CGAL_MPM_INTERNAL_INDEXED_SURFACE_MESH_H
 
 #include <CGAL/MPM/Indexed_mesh.h>
+#include <CGAL/MPM/Input_error.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -31,15 +32,23 @@ template <typename Point>
 CGAL::Surface_mesh<Point> to_surface_mesh_of(const Indexed_mesh& mesh, const std::string& source,
                                              const std::string& user)
 {
-  const Indexed_surface_mesh plain = to_surface_mesh(mesh, source, user);
-  CGAL::Surface_mesh<Point> result;
-  for(auto v : plain.vertices())
-    result.add_vertex(Point(plain.point(v).x(), plain.point(v).y(), plain.point(v).z()));
-  for(auto f : plain.faces())
+  using Result = CGAL::Surface_mesh<Point>;
+  Result result;
+  const int n = mesh.number_of_vertices();
+  for(int v = 0; v < n; ++v) result.add_vertex(Point(mesh.points(v, 0), mesh.points(v, 1), mesh.points(v, 2)));
+  for(int f = 0; f < mesh.number_of_faces(); ++f)
   {
-    std::vector<typename CGAL::Surface_mesh<Point>::Vertex_index> corners;
-    for(auto v : CGAL::vertices_around_face(plain.halfedge(f), plain)) corners.emplace_back(std::size_t(v));
-    result.add_face(corners);
+    const Triangle& t = mesh.triangles[std::size_t(f)];
+    const std::string element = "face " + std::to_string(f);
+    for(int corner : t)
+      if(corner < 0 || corner >= n)
+        throw Input_error(source, element, "vertex " + std::to_string(corner) + " is out of range (the mesh has " +
+                                             std::to_string(n) + " vertices)");
+    using Vertex = typename Result::Vertex_index;
+    if(result.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2])) == Result::null_face())
+      throw Input_error(source, element,
+                        "non-manifold edge or vertex, orientation inconsistent with its neighbours, or a repeated "
+                        "corner (" + user + " needs a manifold, consistently oriented triangle mesh)");
   }
   return result;
 }
