@@ -41,7 +41,7 @@ std::vector<Segmentation_cut> joint_cuts(const std::vector<Segmentation_cut>& cu
   return joints;
 }
 
-void evaluate(const std::string& name, const std::string& base, double search_range)
+void evaluate(const std::string& name, const std::string& base, double search_range, double snap_band, bool details)
 {
   const Labeled_mesh human = read_labeled_mesh(base + ".off", base + ".seg");
   const Indexed_mesh& m = human.mesh;
@@ -51,6 +51,7 @@ void evaluate(const std::string& name, const std::string& base, double search_ra
   Joint_cutting_options options;
   options.skip_unfound = true;
   options.search_range = search_range;
+  options.snap_band = snap_band;
   const auto start = std::chrono::steady_clock::now();
   const Joint_cutting_result result = cut_at_vertices(m, clicks, options, base + ".off");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -64,6 +65,9 @@ void evaluate(const std::string& name, const std::string& base, double search_ra
     sum += d;
     worst = std::max(worst, d);
     within += d < 0.01;
+    if(details)
+      std::cerr << name << ": click " << c.vertex << " on the cut between labels " << cuts[i].first_label << " and "
+                << cuts[i].second_label << ": " << std::fixed << std::setprecision(2) << 100. * d << "% of the diagonal\n";
   }
   const Segmentation_comparison s = compare_segmentations(m, result.mesh.face_labels, human.face_labels);
   const double mean = result.cuts.empty() ? 0. : sum / double(result.cuts.size());
@@ -125,12 +129,13 @@ void evaluate_proposal(const std::string& name, const std::string& base, double 
 int main(int argc, char** argv)
 {
   const mpm_quality::Options options(
-    argc, argv, {{"data", "../shared/data/psb"}, {"meshes", ""}, {"search-range", "0.5"}, {"auto", ""}, {"details", ""}},
-    "usage: quality_segmentation [--data DIR] [--meshes a,b,...] [--search-range R] [--auto SENSITIVITY [--details 1]]\n"
+    argc, argv, {{"data", "../shared/data/psb"}, {"meshes", ""}, {"search-range", "0.5"}, {"snap-band", "0.5"}, {"auto", ""}, {"details", ""}},
+    "usage: quality_segmentation [--data DIR] [--meshes a,b,...] [--search-range R] [--snap-band B] [--auto SENSITIVITY [--details 1]]\n"
     "For every DIR/NAME.off with DIR/NAME.seg, clicks one vertex per human cut, cuts with\n"
     "cut_at_vertices() and prints a Markdown table against the human segmentation. With\n"
     "--auto, cuts at the joints cut_at_proposed_joints() proposes instead (--details 1: each\n"
-    "proposed cut, its limb and strength and its distance to the nearest human cut, on stderr).\n");
+    "proposed cut, its limb and strength and its distance to the nearest human cut, on stderr;\n"
+    "without --auto, each click's cut and its distance to its human cut).\n");
   const std::vector<std::string> names = options.meshes();
   if(!options.text("auto").empty()) {
     std::cout << "| mesh | limbs | cuts | human cuts matched within 1% | cuts matching none | Rand Index error | "
@@ -152,7 +157,8 @@ int main(int argc, char** argv)
   const double search_range = std::atof(options.text("search-range").c_str());
   for(const std::string& name : names) {
     try {
-      evaluate(name, options.text("data") + "/" + name, search_range);
+      evaluate(name, options.text("data") + "/" + name, search_range, std::atof(options.text("snap-band").c_str()),
+               !options.text("details").empty());
     } catch(const std::exception& error) {
       std::cout << "| " << name << " | failed: " << error.what() << " |\n" << std::flush;
     }

@@ -31,11 +31,12 @@ py::dict cutting_dict(Joint_cutting_result&& result)
                   py::arg("skipped") = skipped);
 }
 
-Joint_cutting_options joint_options(double feature_weight, double search_range, bool skip_unfound)
+Joint_cutting_options joint_options(double feature_weight, double search_range, double snap_band, bool skip_unfound)
 {
   Joint_cutting_options options;
   options.feature_weight = feature_weight;
   options.search_range = search_range;
+  options.snap_band = snap_band;
   options.skip_unfound = skip_unfound;
   return options;
 }
@@ -45,22 +46,23 @@ Joint_cutting_options joint_options(double feature_weight, double search_range, 
 void bind_cutting(py::module_& m)
 {
   m.def("cut_at_vertices", [](const py::handle& V, const py::handle& F, const std::vector<int>& vertices,
-                              double feature_weight, double search_range, bool skip_unfound) {
+                              double feature_weight, double search_range, double snap_band, bool skip_unfound) {
     const Indexed_mesh mesh = to_mesh(V, F);
     Joint_cutting_result result;
     {
       py::gil_scoped_release release;
-      result = cut_at_vertices(mesh, vertices, joint_options(feature_weight, search_range, skip_unfound), "V, F");
+      result = cut_at_vertices(mesh, vertices, joint_options(feature_weight, search_range, snap_band, skip_unfound), "V, F");
     }
     return cutting_dict(std::move(result)); },
         py::arg("V"), py::arg("F"), py::arg("vertices"), py::arg("feature_weight") = 1., py::arg("search_range") = 0.5,
-        py::arg("skip_unfound") = false,
+        py::arg("snap_band") = 0.5, py::arg("skip_unfound") = false,
         R"doc(One click per joint: the closed cut around the limb at each vertex.
 
 The mesh must be closed and connected. The limb's axis comes from CGAL's
 curve skeleton; the cut is the narrowest small section across it through the
-vertex (or within search_range limb radii), traced so that it settles in the
-crease. A bad click raises ValueError naming the vertex, unless skip_unfound,
+vertex (or within search_range limb radii), then the loop through the vertex
+of least crease-weighted length within snap_band limb radii of that section
+(0: the section itself), traced so that it settles in the crease. A bad click raises ValueError naming the vertex, unless skip_unfound,
 which reports it in "skipped" instead.
 Returns {"labels": m int32, "cuts": [{"vertex", "path", "length",
 "limb_radius", "shift", "centre"}], "skipped": [{"vertex", "reason"}]}.)doc");

@@ -81,6 +81,7 @@ CGAL::MPM::Joint_cutting_options joint_cutting_options(const Args& args)
   CGAL::MPM::Joint_cutting_options options;
   options.feature_weight = args.real("feature-weight", options.feature_weight);
   options.search_range = args.real("search-range", options.search_range);
+  options.snap_band = args.real("snap-band", options.snap_band);
   return options;
 }
 
@@ -221,7 +222,7 @@ Command make_cut_command()
   c.name = "cut";
   c.summary = "cut a mesh into labelled parts along cutting lines or at clicked joints";
   c.synopsis = "MESH (--cuts CUTS | --at V [--at V ...] | --auto [--sensitivity S]) [--feature-weight W] [--open]\n"
-               "       [--search-range R] -o PREFIX";
+               "       [--search-range R] [--snap-band B] -o PREFIX";
   c.operand = "MESH";
   c.description =
     "MESH is a triangle mesh (OFF, OBJ, PLY or STL). CUTS is a cut file (JSON, see\n"
@@ -229,10 +230,11 @@ Command make_cut_command()
     "paths along mesh edges that prefer concave creases; optional seeds name the\n"
     "labels of the regions. With --at instead, each given vertex is one click per\n"
     "joint: the cut is the closed loop around the limb there (the limb's axis from\n"
-    "the curve skeleton, the section across it through V, traced like a cut line so\n"
-    "that it settles in the crease); the mesh must be closed and connected. With\n"
-    "--auto, the joints are proposed: the skeleton's long branches are limbs, cut\n"
-    "where they leave the body and where they narrow or crease. Writes\n"
+    "the curve skeleton, the section across it through V, then the loop through V\n"
+    "along the crease within --snap-band limb radii of that section, traced like a\n"
+    "cut line); the mesh must be closed and connected. With --auto, the joints are\n"
+    "proposed: the skeleton's long branches are limbs, cut where they leave the\n"
+    "body and where they narrow or crease. Writes\n"
     "PREFIX.off (the geometry, unchanged) and PREFIX.seg (one part label per face),\n"
     "the input 'mpm learn' reads.";
   c.min_positionals = c.max_positionals = 1;
@@ -246,6 +248,9 @@ Command make_cut_command()
      "with --auto: 0 cuts limbs off the body only, higher proposes more joints along them", 0, 1},
     {"search-range", 0, Value_kind::real, "R", "0.5",
      "with --at: how far, in limb radii, to look for a small section when the one at V runs into the body", 0, HUGE_VAL},
+    {"snap-band", 0, Value_kind::real, "B", "0.5",
+     "with --at or --auto: how far, in limb radii, a cut may leave the section through V to follow the crease; "
+     "0 keeps the section", 0, HUGE_VAL},
     {"feature-weight", 0, Value_kind::real, "W", "1",
      "how strongly cuts snap to concave creases; 0 = shortest edge paths", 0, HUGE_VAL},
     {"open", 0, Value_kind::flag, "", "closed loops",

@@ -87,7 +87,7 @@ Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vect
   spec.source = "clicked vertices";
   for(int v : vertices) {
     try {
-      const Section s = finder.find(v);
+      const Section s = finder.snapped(v, finder.find(v), options.snap_band);
       for(std::size_t i = 0; i < found.size(); ++i) finder.check_distinct(found[i], sections[i], v, s);
       const Cut_line line{anchors(mesh, s.loop, options.anchors), true, "at vertex " + std::to_string(v)};
       // Traced alone first, so that a section whose points cannot be joined

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <queue>
 #include <set>
 
 namespace CGAL {
@@ -37,6 +38,7 @@ const Joint_cutting_options& checked(const Joint_cutting_options& o)
   };
   if(!(o.feature_weight >= 0) || !std::isfinite(o.feature_weight)) bad("feature_weight", "must be finite and >= 0");
   if(!(o.search_range >= 0) || !std::isfinite(o.search_range)) bad("search_range", "must be finite and >= 0");
+  if(!(o.snap_band >= 0) || !std::isfinite(o.snap_band)) bad("snap_band", "must be finite and >= 0");
   if(o.anchors < 3) bad("anchors", "must be at least 3");
   if(o.minimum_section_vertices < 3) bad("minimum_section_vertices", "must be at least 3");
   return o;
@@ -88,6 +90,72 @@ Section Joint_finder::find(int v) const
             "is " + std::to_string(axis.radius) + "), nor is any section within the search range: click on a "
             "limb, near its joint");
   return best;
+}
+
+// A shortest path on the surface cut open along the half-plane from the
+// limb's axis through `v`: a vertex is reached on sheet 0 or 1, and an edge
+// that crosses the half-plane changes the sheet, so the shortest path from
+// `v` on sheet 0 to `v` on sheet 1 goes once around the limb.
+Section Joint_finder::snapped(int v, const Section& s, double band) const
+{
+  const Vector d = s.axis.direction.normalized(), e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+  const Vector c = s.centre, pv = point(v);
+  const auto radial = [&](const Vector& q) { return (q - d.dot(q) * d).norm(); };
+  double reach = 0.;
+  for(int u : s.loop) reach = std::max(reach, radial(point(u) - c));
+  reach *= 1.5;
+  const double low = -band * s.axis.radius, high = band * s.axis.radius;
+  const std::size_t n = std::size_t(m_.number_of_vertices());
+  const auto angle = [&](const Vector& q) { return std::atan2(e2.dot(q), e1.dot(q)); };
+  const double start = angle(pv - c);
+  std::vector<double> phi(n, -1.); // angle around the axis from `v`, in [0, 2 pi); -1 outside the band
+  for(std::size_t u = 0; u < n; ++u) {
+    const Vector q = point(int(u)) - c;
+    const double along = s.normal.dot(point(int(u)) - pv);
+    if(along < low || along > high || radial(q) > reach) continue;
+    phi[u] = std::fmod(angle(q) - start + 4. * M_PI, 2. * M_PI);
+  }
+  phi[std::size_t(v)] = 0.;
+  using Item = std::pair<double, std::size_t>; // distance, 2 * vertex + sheet
+  std::vector<double> distance(2 * n, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> previous(2 * n, std::size_t(-1));
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  const std::size_t source = 2 * std::size_t(v), target = source + 1;
+  distance[source] = 0.;
+  queue.push({0., source});
+  while(!queue.empty()) {
+    const auto [dist, node] = queue.top();
+    queue.pop();
+    if(node == target) break;
+    if(dist > distance[node]) continue;
+    const std::size_t u = node / 2;
+    const int sheet = int(node % 2);
+    for(auto h : CGAL::halfedges_around_target(Indexed_surface_mesh::Vertex_index(std::uint32_t(u)), surface_)) {
+      const std::size_t w = std::size_t(surface_.source(h));
+      if(phi[w] < 0.) continue;
+      const double jump = phi[w] - phi[u];
+      const int next_sheet = sheet + (jump < -M_PI ? 1 : jump > M_PI ? -1 : 0);
+      if(next_sheet < 0 || next_sheet > 1) continue;
+      const std::size_t next = 2 * w + std::size_t(next_sheet);
+      const double through = dist + weight_[surface_.edge(h)];
+      if(through < distance[next]) {
+        distance[next] = through;
+        previous[next] = node;
+        queue.push({through, next});
+      }
+    }
+  }
+  if(!(distance[target] < s.weighted)) return s;
+  Section r = s;
+  r.loop.clear();
+  for(std::size_t node = previous[target]; node != source; node = previous[node]) r.loop.push_back(int(node / 2));
+  r.loop.push_back(v);
+  std::reverse(r.loop.begin(), r.loop.end());
+  r.centre = Vector::Zero();
+  for(int u : r.loop) r.centre += point(u);
+  r.centre /= double(r.loop.size());
+  r.weighted = distance[target];
+  return r;
 }
 
 // `direction` and directions tilted from it by each angle (degrees) towards
@@ -267,6 +335,7 @@ Section Joint_finder::section(int v, const Limb_axis& axis, double t, const Vect
   }
   best.shift = t;
   best.axis = axis;
+  best.normal = normal;
   return best;
 }
 

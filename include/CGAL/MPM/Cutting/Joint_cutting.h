@@ -27,7 +27,14 @@ struct Joint_cutting_options
   /// the narrowest, most concave small section instead; 0: never. Must be
   /// finite and >= 0.
   double search_range = 0.5;
-  /// Vertices of the section kept as the cut's points; the feature-weighted
+  /// How far, in limb radii, the cut may leave the plane of the section to
+  /// follow the crease: the loop through the clicked vertex once around the
+  /// limb of least crease-weighted length within that distance of the
+  /// plane. People cut along the crease, which is often oblique to the limb
+  /// or curved (a knuckle, a finger's base on the palm); 0 keeps the planar
+  /// section. Must be finite and >= 0.
+  double snap_band = 0.5;
+  /// Vertices of the loop kept as the cut's points; the feature-weighted
   /// shortest paths between them form the loop. At least 3.
   int anchors = 6;
   /// A section with fewer distinct vertices means the mesh is too coarse
@@ -79,8 +86,10 @@ struct Joint_cutting_result
 /// radius of that radius). The cut starts as the narrowest section of the
 /// mesh through the vertex across one of these axes (the plane perpendicular
 /// to it or tilted by up to 20 degrees) that is a small loop around the axis,
-/// or a nearby one (see `Joint_cutting_options::search_range`), and snaps to
-/// the crease as the feature-weighted geodesic loop of `cut_mesh()` through
+/// or a nearby one (see `Joint_cutting_options::search_range`). It snaps to
+/// the crease as the loop through the vertex around the limb of least
+/// crease-weighted length near that plane (`Joint_cutting_options::snap_band`),
+/// traced as the feature-weighted geodesic loop of `cut_mesh()` through
 /// `Joint_cutting_options::anchors` of its vertices.
 ///
 /// Throws `Input_error` naming the vertex for: a vertex out of range or in

@@ -37,6 +37,7 @@ struct Section
   double off_axis = 0.; // distance of the centre from the axis point
   Limb_axis axis;       // the limb it goes around
   double shift = 0.;    // how far its plane was moved along the axis from the vertex
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // of its plane
 };
 
 // Sections across the limbs of a closed, connected mesh, from CGAL's curve
@@ -54,6 +55,13 @@ public:
   // The section for a click at `v`: through it across the limb under it, or
   // a nearby one within the search range. Throws Input_error naming `v`.
   Section find(int v) const;
+
+  // The loop through `v` once around the limb of `s` (a section through
+  // `v`) of least crease-weighted length, within `band` limb radii of the
+  // section along the axis: the crease a person follows when cutting there,
+  // which may be oblique to the limb or curved. `s` itself when no such
+  // loop is found.
+  Section snapped(int v, const Section& s, double band) const;
 
   // Throws Input_error naming `v` when `a` (clicked at `u`) and `b` lie on one joint.
   void check_distinct(int u, const Section& a, int v, const Section& b) const;
