@@ -235,7 +235,8 @@ int main(int argc, char** argv)
       const Training_example& ex = model.examples.front();
       const Surface_soundness input_soundness = check_surface(input.mesh.mesh);
       const Surface_soundness rest = check_surface(ex.mesh);
-      const std::vector<int> folded = folded_faces(ex.mesh, input.mesh.mesh), spikes = spike_faces(ex.mesh);
+      const std::vector<int> folded = folded_faces(ex.mesh, input.mesh.mesh),
+                             spikes = spike_faces(ex.mesh, CGAL_PI / 3., 2);
       std::vector<int> rest_faults;
       std::set_union(folded.begin(), folded.end(), spikes.begin(), spikes.end(), std::back_inserter(rest_faults));
       int corresponded = 0;

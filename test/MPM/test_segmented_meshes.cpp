@@ -82,10 +82,9 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   EXPECT_EQ(rest.border_edges, 0) << name;
   EXPECT_EQ(rest.non_manifold_edges, 0) << name;
   EXPECT_EQ(rest.degenerate_faces, 0) << name;
-  // The input has none; measured 0 (ant_81, hand_181: 8 and 7 before
-  // folds were opened in a chart) and 4 (octopus_137, at a seam; 7 while
-  // untangling pulled vertices beside a seam onto it).
-  EXPECT_LE(rest.self_intersections, 4) << name;
+  // The input has none, nor has the example since its merged seams are
+  // straightened on the input (octopus_137 had 4, at a seam, before).
+  EXPECT_EQ(rest.self_intersections, 0) << name;
   // Below the 0.5% aimed at: measured 0.20% (ant_81), 0.34% (hand_181),
   // 0.38% (octopus_137; 0.55% while a move onto its curled arm tip turned
   // triangles and was undone); 0.55-0.69% before extremities were covered
@@ -93,8 +92,11 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.005) << name;
 
   // Faces the edits may turn without turning anything inside out: folds
-  // of the correspondence and spikes at rest, which an edit flattens.
-  const std::vector<int> folded = folded_faces(ex.mesh, l.input.mesh.mesh), spikes = spike_faces(ex.mesh);
+  // of the correspondence and spikes or slivers creased along two edges at
+  // rest, which an edit flattens (octopus_137's symmetrize flattens a seam
+  // sliver folded by 132 and 81 degrees at rest).
+  const std::vector<int> folded = folded_faces(ex.mesh, l.input.mesh.mesh),
+                         spikes = spike_faces(ex.mesh, CGAL_PI / 3., 2);
   std::vector<int> rest_faults;
   std::set_union(folded.begin(), folded.end(), spikes.begin(), spikes.end(), std::back_inserter(rest_faults));
   for(int edit = 0; edit < 3; ++edit)

@@ -111,4 +111,7 @@ TEST(Surface_soundness, spikes_are_faces_sharp_on_all_three_edges)
   EXPECT_EQ(spike_faces(tetrahedron).size(), 4u);
   EXPECT_EQ(spike_faces(tetrahedron, 2.).size(), 0u); // 1.91 radians
   EXPECT_TRUE(spike_faces(two_tubes()).empty());
+  EXPECT_TRUE(spike_faces(two_tubes(), CGAL_PI / 3., 2).empty());
+  EXPECT_EQ(spike_faces(tetrahedron, CGAL_PI / 3., 2).size(), 4u);
+  EXPECT_EQ(spike_faces(tetrahedron, CGAL_PI / 3., 4).size(), 0u); // a triangle has three edges
 }

@@ -194,18 +194,18 @@ std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surf
   return folded;
 }
 
-std::vector<int> spike_faces(const Indexed_mesh& mesh, double angle)
+std::vector<int> spike_faces(const Indexed_mesh& mesh, double angle, int sharp_edges)
 {
-  std::vector<int> sharp_edges(mesh.triangles.size(), 0);
+  std::vector<int> sharp(mesh.triangles.size(), 0);
   for(const internal::Edge_fold& e : internal::edge_folds(mesh.points, mesh.triangles))
     if(e.angle > angle)
     {
-      ++sharp_edges[std::size_t(e.first)];
-      ++sharp_edges[std::size_t(e.second)];
+      ++sharp[std::size_t(e.first)];
+      ++sharp[std::size_t(e.second)];
     }
   std::vector<int> spikes;
-  for(std::size_t f = 0; f < sharp_edges.size(); ++f)
-    if(sharp_edges[f] == 3) spikes.push_back(int(f));
+  for(std::size_t f = 0; f < sharp.size(); ++f)
+    if(sharp[f] >= sharp_edges) spikes.push_back(int(f));
   return spikes;
 }
 

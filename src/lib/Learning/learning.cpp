@@ -7,6 +7,7 @@
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Training_parts.h>
 #include <CGAL/MPM/internal/Example_untangling.h>
+#include <CGAL/MPM/internal/Seam_smoothing.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
@@ -275,8 +276,9 @@ void add_virtual_edges(const Point_matrix& from, const std::vector<int>& from_po
 }
 
 // An example with merged seams becomes one mesh: its parts' border edges
-// split at the other side's seam vertices, identified vertices shared.
-void stitch_example(const Morphable_part_model& model, Training_example& example)
+// split at the other side's seam vertices, identified vertices shared, the
+// seams straightened on `input`, the surface the example approximates.
+void stitch_example(const Morphable_part_model& model, Training_example& example, const Indexed_mesh& input)
 {
   Part_graph& graph = example.graph;
   if(std::all_of(graph.edges.begin(), graph.edges.end(), [](const Part_edge& e) { return e.merged_seam.empty(); }))
@@ -290,6 +292,13 @@ void stitch_example(const Morphable_part_model& model, Training_example& example
   example.mesh = internal::stitch_part_graph(model, graph, refined, placed, &face_nodes);
   example.face_labels.clear();
   for(int node : face_nodes) example.face_labels.push_back(graph.nodes[node].label);
+  std::set<std::pair<int, int>> merged;
+  for(const Part_edge& e : graph.edges)
+    if(!e.merged_seam.empty()) {
+      const int a = graph.nodes[std::size_t(e.first)].label, b = graph.nodes[std::size_t(e.second)].label;
+      merged.insert({std::min(a, b), std::max(a, b)});
+    }
+  example.mesh.points = internal::smoothed_seams(example.mesh, example.face_labels, merged, input);
 }
 
 // The labels of the faces on edges of one face (open seams, holes).
@@ -564,11 +573,11 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
         edge.merged_seam = oo.flipped ? swapped(o.merged) : o.merged;
         example.graph.edges.push_back(std::move(edge));
       }
-    stitch_example(model, example);
+    const Training_input& input = originals ? (*originals)[e] : inputs[e];
+    stitch_example(model, example, input.mesh.mesh);
     // Stitching corresponded parts back together can fail where a
     // template's border folds along its seam; say so rather than hand edits
     // a surface with a gap the input did not have.
-    const Training_input& input = originals ? (*originals)[e] : inputs[e];
     if(labels_at_open_edges(input.mesh.mesh, input.mesh.face_labels).empty())
     {
       const std::set<int> open = labels_at_open_edges(example.mesh, example.face_labels);

@@ -79,12 +79,13 @@ std::vector<int> locally_inverted_faces(const Indexed_mesh& mesh, const Indexed_
 std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surface);
 
 /// \ingroup PkgMPMRef
-/// Faces of `mesh` that stand out of the surface as spikes: each of their
-/// three edges folds by more than `angle` (radians; the angle between the
-/// two faces' normals). A correspondence leaves a few next to seams; an
-/// edit that flattens one turns it against its rest normal, which
+/// Faces of `mesh` that stand out of the surface as spikes: at least
+/// `sharp_edges` of their three edges fold by more than `angle` (radians;
+/// the angle between the two faces' normals); with 2, also slivers creased
+/// along two edges. A correspondence leaves a few next to seams; an edit
+/// that flattens one turns it against its rest normal, which
 /// `inverted_faces()` then counts although nothing turned inside out.
-std::vector<int> spike_faces(const Indexed_mesh& mesh, double angle = CGAL_PI / 3.);
+std::vector<int> spike_faces(const Indexed_mesh& mesh, double angle = CGAL_PI / 3., int sharp_edges = 3);
 
 /// \ingroup PkgMPMRef
 /// Symmetric Hausdorff distance between two surfaces, approximated by
