@@ -58,9 +58,9 @@ public:
 
   // The loop through `v` once around the limb of `s` (a section through
   // `v`) of least crease-weighted length, within `band` limb radii of the
-  // section along the axis: the crease a person follows when cutting there,
-  // which may be oblique to the limb or curved. `s` itself when no such
-  // loop is found.
+  // section's plane and one and a half times its reach from the axis: the
+  // crease a person follows when cutting there, which may be oblique to
+  // the limb or curved. `s` itself when no loop there is cheaper.
   Section snapped(int v, const Section& s, double band) const;
 
   // Throws Input_error naming `v` when `a` (clicked at `u`) and `b` lie on one joint.
