@@ -62,6 +62,16 @@ std::map<int, Label_surface> surfaces_by_label(const Labeled_mesh& input)
   return surfaces;
 }
 
+// The pairs of faces of `mesh` that cross each other.
+std::vector<std::pair<int, int>> crossings_of(const Mesh& mesh)
+{
+  std::vector<std::pair<Face, Face>> found;
+  PMP::self_intersections(mesh, std::back_inserter(found));
+  std::vector<std::pair<int, int>> pairs;
+  for(const auto& [f, g] : found) pairs.emplace_back(int(f), int(g));
+  return pairs;
+}
+
 // The example as a halfedge mesh whose points are changed in place for
 // each trial, so that crossings and folds are counted only where a trial
 // moves vertices: among the faces whose boxes meet those it touches.
@@ -70,14 +80,7 @@ class Trial_mesh
 public:
   Trial_mesh(Mesh mesh, const Fold_test& folds) : mesh_(std::move(mesh)), folds_(folds) {}
 
-  std::vector<std::pair<int, int>> crossing_pairs() const
-  {
-    std::vector<std::pair<Face, Face>> found;
-    PMP::self_intersections(mesh_, std::back_inserter(found));
-    std::vector<std::pair<int, int>> pairs;
-    for(const auto& [f, g] : found) pairs.emplace_back(int(f), int(g));
-    return pairs;
-  }
+  std::vector<std::pair<int, int>> crossing_pairs() const { return crossings_of(mesh_); }
 
   // Moves `moved` to `positions` if that lowers the crossings near them
   // without folding more faces over the input; returns whether it did.
@@ -185,12 +188,15 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
   {
     return {};
   }
-  const Fold_test folds(input.mesh);
-  Trial_mesh trial(std::move(example), folds);
+  // The input's crossings and its fold test only when the example crosses
+  // itself at all, which a learned example rarely does.
+  std::vector<std::pair<int, int>> crossing = crossings_of(example);
+  if(crossing.empty()) return {};
   std::vector<std::pair<int, int>> own_pairs;
   const int own = self_intersecting_faces(input.mesh, own_pairs) ? int(own_pairs.size()) : 0;
-  std::vector<std::pair<int, int>> crossing = trial.crossing_pairs();
   if(int(crossing.size()) <= own) return {};
+  const Fold_test folds(input.mesh);
+  Trial_mesh trial(std::move(example), folds);
   // Each vertex's label; -1 on a seam (faces of two labels), where it stays:
   // a seam vertex moved would be merged anew when the model is learned
   // again, and the dockings it changed folded an ant's legs when
