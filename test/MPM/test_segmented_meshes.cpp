@@ -97,6 +97,11 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   // sliver folded by 132 and 81 degrees at rest).
   const std::vector<int> folded = folded_faces(ex.mesh, l.input.mesh.mesh),
                          spikes = spike_faces(ex.mesh, CGAL_PI / 3., 2);
+  // Seam moves that fold a face are not made, and seam vertices of faces
+  // the correspondence folded move to unfold them: octopus_137 had 6 folded
+  // faces at its thin rings' seams, now 1 (a sliver whose three corners are
+  // on one seam); ant_81 and hand_181 none.
+  EXPECT_LE(folded.size(), name == "octopus_137" ? 1u : 0u) << name;
   std::vector<int> rest_faults;
   std::set_union(folded.begin(), folded.end(), spikes.begin(), spikes.end(), std::back_inserter(rest_faults));
   for(int edit = 0; edit < 3; ++edit)
@@ -299,7 +304,9 @@ TEST(Segmented_meshes_untangled, vertices_beside_a_seam_are_not_pulled_onto_it)
     const Surface_soundness s = check_surface(example);
     EXPECT_LE(s.self_intersections, most) << name;
     EXPECT_EQ(s.border_edges, 0) << name;
-    EXPECT_LE(folded_faces(example, l.input.mesh.mesh).size(), 12u) << name;
+    // None on either since seam moves that fold are not made (2 on
+    // octopus_126 before).
+    EXPECT_EQ(folded_faces(example, l.input.mesh.mesh).size(), 0u) << name;
     EXPECT_LT(relative_hausdorff_distance(example, l.input.mesh.mesh), 0.003) << name;
   }
 }
@@ -318,7 +325,7 @@ TEST(Segmented_meshes_tubes, thin_arms_are_corresponded_along_the_tube)
   const Indexed_mesh& example = model.examples.front().mesh;
   EXPECT_LT(relative_hausdorff_distance(example, l.input.mesh.mesh), 0.005);
   EXPECT_EQ(check_surface(example).self_intersections, 0);
-  EXPECT_LE(folded_faces(example, l.input.mesh.mesh).size(), 4u);
+  EXPECT_EQ(folded_faces(example, l.input.mesh.mesh).size(), 0u);
   const int tip = model.find_type("tip2");
   ASSERT_GE(tip, 0);
   int tips = 0;

@@ -5,7 +5,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
-#include <CGAL/MPM/internal/Fold_test.h>
+#include <CGAL/MPM/internal/Nearest_surface.h>
 #include <CGAL/MPM/internal/Target_unfolding.h>
 
 #include <Eigen/Geometry>
@@ -154,22 +154,29 @@ std::vector<int> inverted_faces(const Indexed_mesh& mesh, const Indexed_mesh& re
 
 namespace internal {
 
-struct Fold_test::Impl
+struct Nearest_surface::Impl
 {
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
   explicit Impl(const Indexed_mesh& surface)
     : target(surface_mesh_of(surface)), tree(faces(target).first, faces(target).second, target)
   {
+    tree.accelerate_distance_queries();
   }
   Mesh target;
   CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree;
 };
 
-Fold_test::Fold_test(const Indexed_mesh& surface) : impl_(std::make_unique<Impl>(surface)) {}
+Nearest_surface::Nearest_surface(const Indexed_mesh& surface) : impl_(std::make_unique<Impl>(surface)) {}
 
-Fold_test::~Fold_test() = default;
+Nearest_surface::~Nearest_surface() = default;
 
-bool Fold_test::folded(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) const
+Eigen::Vector3d Nearest_surface::closest_point(const Eigen::Vector3d& p) const
+{
+  const Point_3 q = impl_->tree.closest_point(Point_3(p[0], p[1], p[2]));
+  return {q.x(), q.y(), q.z()};
+}
+
+bool Nearest_surface::folded(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) const
 {
   const Eigen::Vector3d centroid = (a + b + c) / 3.;
   const Mesh::Face_index nearest =
@@ -182,7 +189,7 @@ bool Fold_test::folded(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const
 
 std::vector<int> folded_faces(const Indexed_mesh& mesh, const Indexed_mesh& surface)
 {
-  const internal::Fold_test test(surface);
+  const internal::Nearest_surface test(surface);
   std::vector<int> folded;
   for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
   {

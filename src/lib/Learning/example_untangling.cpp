@@ -5,18 +5,13 @@
 #include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
-#include <CGAL/MPM/internal/Fold_test.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Nearest_surface.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Simple_cartesian.h>
 
 #include <map>
-#include <memory>
 
 namespace CGAL {
 namespace MPM {
@@ -24,40 +19,25 @@ namespace internal {
 
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
 // Crossings are decided by exact predicates, as `self_intersecting_faces()`
 // decides them: with rounded ones, faces meeting at a shallow angle along an
 // edge are reported as crossing.
 using Exact_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Exact_kernel::Point_3>;
 using Face = Mesh::Face_index;
-using Triangle_iterator = std::vector<Kernel::Triangle_3>::const_iterator;
-using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangle_iterator>>>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-Kernel::Point_3 point_of(const Point_matrix& p, Eigen::Index v) { return {p(v, 0), p(v, 1), p(v, 2)}; }
-
-// The input's faces of one label, to project onto.
-struct Label_surface
+// The input's faces of each label, to project onto.
+std::map<int, Nearest_surface> surfaces_by_label(const Labeled_mesh& input)
 {
-  std::vector<Kernel::Triangle_3> triangles;
-  std::unique_ptr<Triangle_tree> tree;
-};
-
-std::map<int, Label_surface> surfaces_by_label(const Labeled_mesh& input)
-{
-  std::map<int, Label_surface> surfaces;
+  std::map<int, Indexed_mesh> parts;
   for(std::size_t f = 0; f < input.mesh.triangles.size(); ++f)
+    parts[input.face_labels[f]].triangles.push_back(input.mesh.triangles[f]);
+  std::map<int, Nearest_surface> surfaces;
+  for(auto& [label, part] : parts)
   {
-    const Triangle& t = input.mesh.triangles[f];
-    surfaces[input.face_labels[f]].triangles.emplace_back(point_of(input.mesh.points, t[0]),
-                                                          point_of(input.mesh.points, t[1]),
-                                                          point_of(input.mesh.points, t[2]));
-  }
-  for(auto& [label, s] : surfaces)
-  {
-    s.tree = std::make_unique<Triangle_tree>(s.triangles.begin(), s.triangles.end());
-    s.tree->accelerate_distance_queries();
+    part.points = input.mesh.points;
+    surfaces.try_emplace(label, part);
   }
   return surfaces;
 }
@@ -78,7 +58,7 @@ std::vector<std::pair<int, int>> crossings_of(const Mesh& mesh)
 class Trial_mesh
 {
 public:
-  Trial_mesh(Mesh mesh, const Fold_test& folds) : mesh_(std::move(mesh)), folds_(folds) {}
+  Trial_mesh(Mesh mesh, const Nearest_surface& folds) : mesh_(std::move(mesh)), folds_(folds) {}
 
   std::vector<std::pair<int, int>> crossing_pairs() const { return crossings_of(mesh_); }
 
@@ -150,7 +130,7 @@ private:
   }
 
   Mesh mesh_;
-  const Fold_test& folds_;
+  const Nearest_surface& folds_;
 };
 
 // The vertices of `faces` and `rings` rings around them that are inside a
@@ -195,7 +175,7 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
   std::vector<std::pair<int, int>> own_pairs;
   const int own = self_intersecting_faces(input.mesh, own_pairs) ? int(own_pairs.size()) : 0;
   if(int(crossing.size()) <= own) return {};
-  const Fold_test folds(input.mesh);
+  const Nearest_surface folds(input.mesh);
   Trial_mesh trial(std::move(example), folds);
   // Each vertex's label; -1 on a seam (faces of two labels), where it stays:
   // a seam vertex moved would be merged anew when the model is learned
@@ -211,7 +191,7 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
     next[std::size_t(e.source)].push_back(e.target);
     next[std::size_t(e.target)].push_back(e.source);
   }
-  const std::map<int, Label_surface> surfaces = surfaces_by_label(input);
+  const std::map<int, Nearest_surface> surfaces = surfaces_by_label(input);
   // A vertex inside a part to the mean of its neighbours, back onto its
   // part of the input. The seam splits the triangles along it into fans,
   // so a vertex next to a seam has many seam neighbours close together:
@@ -230,8 +210,7 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
     const Eigen::RowVector3d mean =
       (inside + (seam_count ? Eigen::RowVector3d(seam / seam_count) : Eigen::RowVector3d::Zero())) /
       double(inside_count + (seam_count ? 1 : 0));
-    const Kernel::Point_3 q = s->second.tree->closest_point(Kernel::Point_3(mean[0], mean[1], mean[2]));
-    points.row(Eigen::Index(v)) << q.x(), q.y(), q.z();
+    points.row(Eigen::Index(v)) = s->second.closest_point(mean.transpose()).transpose();
   };
   Point_matrix points = mesh.points;
   bool improved = false;

@@ -22,7 +22,11 @@ namespace internal {
 // two such seam neighbours moves halfway to their midpoint, `iterations`
 // times, each time back onto `surface` (its closest point), which keeps the
 // seam on the input without shrinking it; junctions and the seams between
-// parts kept as they were stay. Returns the new positions of `mesh`.
+// parts kept as they were stay. A move that folds more faces over `surface`
+// (`folded_faces()`) is not made: a seam vertex moved across a neighbour's
+// chord turns the sliver between them over. Then each seam vertex of a face
+// still folded moves towards the mean of its neighbours where that unfolds
+// faces. Returns the new positions of `mesh`.
 Point_matrix smoothed_seams(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
                             const std::set<std::pair<int, int>>& merged, const Indexed_mesh& surface,
                             int iterations = 8);
