@@ -38,14 +38,15 @@ Eigen::SparseMatrix<double> vertex_block_like(int vertices)
 
 // One pass over the factor for all columns gives what Eigen's column by
 // column solve gives (the same operations in the same order per column),
-// for one, three (a displayed frame) and many columns (the set-up's
-// batches, cut into groups solved in parallel).
+// for one, three (a displayed frame), a few (groups of every width the
+// solve unrolls) and many columns (the set-up's batches, cut into groups
+// solved in parallel).
 TEST(Ldlt_row_solve, agrees_with_eigens_solve)
 {
   const Eigen::SparseMatrix<double> a = vertex_block_like(3000);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
   ASSERT_EQ(ldlt.info(), Eigen::Success);
-  for(const Eigen::Index columns : {1, 3, 50})
+  for(const Eigen::Index columns : {1, 2, 3, 7, 50})
   {
     const Eigen::MatrixXd b = Eigen::MatrixXd::Random(a.rows(), columns);
     const Eigen::MatrixXd reference = ldlt.solve(b);

@@ -99,11 +99,9 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
       for(int i = 0; i < 3; ++i) mixed(3 * c + i, m) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
     }
   }
-  Eigen::MatrixXd s;
-  Eigen::VectorXd r;
-  coordinate_system(s, r);
-  const Eigen::LLT<Eigen::MatrixXd> llt(2. * s);
-  hessian -= mixed * llt.solve(mixed.transpose());
+  // mixed (2 S)^-1 mixed^T, S factored by the global step before (the same
+  // rotations).
+  hessian -= 0.5 * mixed * coordinate_factor().solve(mixed.transpose());
   return 0.5 * (hessian + hessian.transpose());
 }
 

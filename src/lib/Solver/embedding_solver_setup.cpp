@@ -246,6 +246,7 @@ void Embedding_solver::Impl::factor()
   handle_columns_valid = false;
 
   if(global_step->uses_blocks()) schur.build(clusters, cluster_of_mode, coupling, *block);
+  factored_rotations.clear();
 }
 
 // Accepts `vertices` as a low-rank change of the factored block when few
@@ -259,6 +260,7 @@ bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
   if(!factored || !block->update(diagonal_terms(vertices), max_update)) return false;
   handle_columns_valid = false;
   if(global_step->uses_blocks()) schur.update(clusters, *block);
+  factored_rotations.clear();
   return true;
 }
 
@@ -311,6 +313,7 @@ void Embedding_solver::Impl::prepare_handle_terms()
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
   if(global_step->uses_blocks()) schur.set_handle_terms(clusters, b0, handle_solution());
+  factored_rotations.clear();
   handle_terms_ready = true;
   // The blocks of the implicit positions depend on the handle terms.
   if(implicit) w_blocks = w_of(coordinates);

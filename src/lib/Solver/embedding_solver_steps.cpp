@@ -5,6 +5,9 @@
 #include <CGAL/MPM/Input_error.h>
 
 #include <Eigen/Cholesky>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -39,15 +42,30 @@ void Embedding_solver::Impl::coordinate_system(Eigen::MatrixXd& s, Eigen::Vector
   s = 0.5 * (s + s.transpose());
 }
 
+// The LLT factor of S(R) at the current rotations, and r(R) in `r`.
+const Eigen::LLT<Eigen::MatrixXd>& Embedding_solver::Impl::coordinate_factor(Eigen::VectorXd* r) const
+{
+  if(factored_rotations.empty() || factored_rotations != rotations)
+  {
+    Eigen::MatrixXd s;
+    coordinate_system(s, coordinate_rhs);
+    coordinate_llt.compute(s);
+    if(coordinate_llt.info() != Eigen::Success)
+    {
+      factored_rotations.clear();
+      throw Computation_error("embedding: the shape-coordinate system is not positive definite");
+    }
+    factored_rotations = rotations;
+  }
+  if(r) *r = coordinate_rhs;
+  return coordinate_llt;
+}
+
 Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
 {
   if(total_modes == 0) return Eigen::VectorXd::Zero(0);
-  Eigen::MatrixXd s;
   Eigen::VectorXd r;
-  coordinate_system(s, r);
-  Eigen::LLT<Eigen::MatrixXd> llt(s);
-  if(llt.info() != Eigen::Success)
-    throw Computation_error("embedding: the shape-coordinate system is not positive definite");
+  const Eigen::LLT<Eigen::MatrixXd>& llt = coordinate_factor(&r);
   return llt.solve(r);
 }
 
@@ -311,24 +329,50 @@ const Point_matrix& Embedding_solver::Impl::materialized_positions()
   return positions;
 }
 
-double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only) const
+// One cluster's edge and prior terms. With one rotation per cluster the
+// target's edge vectors are turned once per vertex rather than per edge,
+// and the positions are read as rows of a local copy (a column-major
+// `Point_matrix` keeps a vertex's coordinates a column apart).
+double Embedding_solver::Impl::cluster_energy(std::size_t c, const Point_matrix& v, const Eigen::VectorXd& lambda) const
 {
+  const Cluster_data& d = clusters[c];
+  const Eigen::Index size = Eigen::Index(d.vertices.size());
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  Rows at(size, 3);
+  for(Eigen::Index i = 0; i < size; ++i) at.row(i) = v.row(d.vertices[std::size_t(i)]);
+  const Point_matrix m = target_shape(d, lambda);
   double e = 0.;
-  for(std::size_t c = 0; c < clusters.size(); ++c)
+  if(rotation_groups.per_cluster())
   {
-    if(only >= 0 && int(c) != only) continue;
-    const Cluster_data& d = clusters[c];
-    const Point_matrix m = target_shape(d, lambda);
+    const Rows turned = m * rotation_groups.cluster_transform(int(c), rotations).transpose();
+    for(const Weighted_edge& edge : d.edges)
+      e += edge.w * (at.row(edge.i) - at.row(edge.j) - turned.row(edge.i) + turned.row(edge.j)).squaredNorm();
+  }
+  else
     for(const Weighted_edge& edge : d.edges)
     {
       const Eigen::Matrix3d transform = rotation_groups.edge_transform(static_cast<int>(c), edge, rotations);
-      e += edge.w * ((v.row(d.vertices[edge.i]) - v.row(d.vertices[edge.j])).transpose() -
-                     transform * (m.row(edge.i) - m.row(edge.j)).transpose())
+      e += edge.w * ((at.row(edge.i) - at.row(edge.j)).transpose() - transform * (m.row(edge.i) - m.row(edge.j)).transpose())
                       .squaredNorm();
     }
-    for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
-  }
-  if(only >= 0) return e;
+  for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
+  return e;
+}
+
+double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only) const
+{
+  if(only >= 0) return cluster_energy(std::size_t(only), v, lambda);
+  // The clusters' terms in parallel, summed in order so that the energy
+  // does not depend on the scheduling.
+  std::vector<double> terms(clusters.size());
+  const auto term = [&](std::size_t c) { terms[c] = cluster_energy(c, v, lambda); };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(std::size_t(0), clusters.size(), term);
+#else
+  for(std::size_t c = 0; c < clusters.size(); ++c) term(c);
+#endif
+  double e = 0.;
+  for(double t : terms) e += t;
   e += lambda.dot(coupling * lambda);
   const double handle_weight = options.handle_weight * mean_diagonal;
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)

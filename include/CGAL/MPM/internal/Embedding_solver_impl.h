@@ -19,6 +19,7 @@
 #include <CGAL/MPM/internal/Schur_blocks.h>
 #include <CGAL/MPM/internal/Vertex_block.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -93,6 +94,12 @@ struct Embedding_solver::Impl
   // of handle set it cannot take as a low-rank update; it still gives the
   // implicit positions of the current state until refactored.
   std::unique_ptr<internal::embedding::Vertex_block> block;
+  // S(R) factored at `factored_rotations` (coordinate_factor()): the Newton
+  // step after a global step factors the same system. Emptied whenever the
+  // blocks S is made of change.
+  mutable Eigen::LLT<Eigen::MatrixXd> coordinate_llt;
+  mutable Eigen::VectorXd coordinate_rhs;
+  mutable std::vector<Eigen::Matrix3d> factored_rotations;
   bool factored = false;
   bool handle_terms_ready = false;
   Eigen::VectorXd anchor;         // per-vertex anchor weight
@@ -147,6 +154,7 @@ struct Embedding_solver::Impl
   double quasi_newton_improve(internal::Rotation_lbfgs& lbfgs, const std::vector<Eigen::Matrix3d>& start,
                               double start_energy, Eigen::VectorXd& gradient, double energy, bool try_step);
   void coordinate_system(Eigen::MatrixXd& s, Eigen::VectorXd& r) const;
+  const Eigen::LLT<Eigen::MatrixXd>& coordinate_factor(Eigen::VectorXd* r = nullptr) const;
   Eigen::VectorXd solve_coordinates() const;
   Eigen::MatrixXd reduced_hessian() const;
   Eigen::VectorXd without_free_turns(Eigen::VectorXd step) const;
@@ -158,6 +166,7 @@ struct Embedding_solver::Impl
   const Point_matrix& materialized_positions();
   double take_explicit(Point_matrix v, Eigen::VectorXd lambda, Iteration_timings& t);
   double energy_of(const Point_matrix& v, const Eigen::VectorXd& lambda, int only = -1) const;
+  double cluster_energy(std::size_t c, const Point_matrix& v, const Eigen::VectorXd& lambda) const;
   void check_finite(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
   [[noreturn]] void fail_on_non_finite_energy(const Point_matrix& v, const Eigen::VectorXd& lambda) const;
   std::string largest_energy_term(const Point_matrix& v, const Eigen::VectorXd& lambda) const;

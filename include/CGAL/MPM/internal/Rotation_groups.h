@@ -39,6 +39,14 @@ public:
   /// The linear map the target vector of edge `e` of cluster `c` goes
   /// through: the mean rotation of the groups holding the edge.
   Eigen::Matrix3d edge_transform(int c, const Weighted_edge& e, const std::vector<Eigen::Matrix3d>& rotations) const;
+  /// Whether every edge of a cluster goes through the same map (one group
+  /// per cluster), `cluster_transform()`.
+  bool per_cluster() const { return !per_vertex_; }
+  /// With `per_cluster()`, the map of every edge of cluster `c`.
+  const Eigen::Matrix3d& cluster_transform(int c, const std::vector<Eigen::Matrix3d>& rotations) const
+  {
+    return rotations[std::size_t(first_group_[std::size_t(c)])];
+  }
 
 private:
   struct Group
