@@ -48,12 +48,14 @@ Point_matrix smoothed_seams(const Indexed_mesh& mesh, const std::vector<int>& fa
     return count;
   };
   // Moves `v` onto the surface's point nearest `target` unless that folds
-  // more faces around it than `allowed`: a seam vertex moved across a
-  // neighbour's chord turns over the sliver between them.
+  // more faces around it than `allowed` (a seam vertex moved across a
+  // neighbour's chord turns over the sliver between them); whether it moved.
   const auto move = [&](int v, const Eigen::Vector3d& target, int allowed) {
     const Eigen::RowVector3d old = points.row(v);
     points.row(v) = nearest.closest_point(target).transpose();
-    if(folded_around(v) > allowed) points.row(v) = old;
+    if(folded_around(v) <= allowed) return true;
+    points.row(v) = old;
+    return false;
   };
   for(int i = 0; i < iterations; ++i) {
     const Point_matrix before = points;
@@ -74,10 +76,8 @@ Point_matrix smoothed_seams(const Indexed_mesh& mesh, const std::vector<int>& fa
       for(int w : next[std::size_t(v)]) mean += points.row(w).transpose();
       mean /= double(next[std::size_t(v)].size());
       const Eigen::Vector3d start = points.row(v).transpose();
-      for(double step : {1., 0.5, 0.25, 2.}) {
-        move(v, start + step * (mean - start), folded - 1);
-        if(folded_around(v) < folded) break;
-      }
+      for(double step : {1., 0.5, 0.25, 2.})
+        if(move(v, start + step * (mean - start), folded - 1)) break;
     }
   return points;
 }
