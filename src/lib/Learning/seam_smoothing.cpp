@@ -5,81 +5,175 @@
 #include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Nearest_surface.h>
 
+#include <algorithm>
+
 namespace CGAL {
 namespace MPM {
 namespace internal {
+
+namespace {
+
+// The example's vertices as the smoothing moves them: which may move (the
+// vertices of merged seams with two seam neighbours), and how many faces
+// around some vertices lie folded over the surface.
+class Seam_smoother
+{
+public:
+  Seam_smoother(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
+                const std::set<std::pair<int, int>>& merged, const Indexed_mesh& surface)
+    : mesh_(mesh), points_(mesh.points), along_(mesh.points.rows()), next_(mesh.points.rows()),
+      faces_at_(mesh.points.rows()), movable_(mesh.points.rows(), false)
+  {
+    // A vertex on a seam that is not merged stays.
+    std::vector<bool> kept(movable_.size(), false);
+    for(const auto& [edge, faces] : faces_of_edges(mesh)) {
+      next_[std::size_t(edge.first)].push_back(edge.second);
+      next_[std::size_t(edge.second)].push_back(edge.first);
+      if(faces.size() != 2) continue;
+      const int a = face_labels[std::size_t(faces[0])], b = face_labels[std::size_t(faces[1])];
+      if(a == b) continue;
+      if(merged.count({std::min(a, b), std::max(a, b)})) {
+        along_[std::size_t(edge.first)].push_back(edge.second);
+        along_[std::size_t(edge.second)].push_back(edge.first);
+      } else
+        kept[std::size_t(edge.first)] = kept[std::size_t(edge.second)] = true;
+    }
+    for(std::size_t v = 0; v < movable_.size(); ++v)
+      if(along_[v].size() == 2 && !kept[v]) {
+        movable_[v] = true;
+        moving_.push_back(int(v));
+      }
+    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for(int v : mesh.triangles[f]) faces_at_[std::size_t(v)].push_back(int(f));
+    if(!moving_.empty() && !surface.triangles.empty()) nearest_ = std::make_unique<Nearest_surface>(surface);
+  }
+
+  bool active() const { return nearest_ != nullptr; }
+  const Point_matrix& points() const { return points_; }
+
+  // Each vertex halfway to the midpoint of its seam neighbours, back onto
+  // the surface, unless that folds more faces around it.
+  void straighten()
+  {
+    const Point_matrix before = points_;
+    for(int v : moving_) {
+      const std::vector<int>& a = along_[std::size_t(v)];
+      move({v}, {(0.5 * before.row(v) + 0.25 * (before.row(a[0]) + before.row(a[1]))).transpose()},
+           folded_around({v}));
+    }
+  }
+
+  // Each vertex of a folded face towards the mean of its neighbours (all
+  // the way, half, a quarter or twice), where that unfolds faces.
+  void unfold_vertices()
+  {
+    for(int v : moving_) {
+      const int folded = folded_around({v});
+      if(folded == 0) continue;
+      const Eigen::Vector3d start = points_.row(v).transpose(), mean = neighbour_mean(v);
+      for(double step : {1., 0.5, 0.25, 2.})
+        if(move({v}, {start + step * (mean - start)}, folded - 1)) break;
+    }
+  }
+
+  // The movable corners of each face still folded towards the means of
+  // their neighbours together: a sliver whose three corners lie on one
+  // seam folds as many faces as it unfolds when one corner moves alone.
+  void unfold_faces()
+  {
+    for(std::size_t f = 0; f < mesh_.triangles.size(); ++f) {
+      if(!folded(int(f))) continue;
+      std::vector<int> corners;
+      for(int v : mesh_.triangles[f])
+        if(movable_[std::size_t(v)]) corners.push_back(v);
+      if(corners.empty()) continue;
+      const int before = folded_around(corners);
+      for(double step : {1., 0.5, 0.25}) {
+        std::vector<Eigen::Vector3d> targets;
+        for(int v : corners) {
+          const Eigen::Vector3d start = points_.row(v).transpose();
+          targets.push_back(start + step * (neighbour_mean(v) - start));
+        }
+        // Kept when the face unfolds and no more faces around it are
+        // folded: a fold next to it may then go at its own turn.
+        if(move(corners, targets, before)) {
+          if(!folded(int(f))) break;
+          undo_last_move();
+        }
+      }
+    }
+  }
+
+private:
+  bool folded(int f) const
+  {
+    const Triangle& t = mesh_.triangles[std::size_t(f)];
+    return nearest_->folded(points_.row(t[0]).transpose(), points_.row(t[1]).transpose(),
+                            points_.row(t[2]).transpose());
+  }
+
+  // The faces around `vertices` folded over the surface, each once.
+  int folded_around(const std::vector<int>& vertices) const
+  {
+    std::vector<int> faces;
+    for(int v : vertices) faces.insert(faces.end(), faces_at_[std::size_t(v)].begin(), faces_at_[std::size_t(v)].end());
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    return int(std::count_if(faces.begin(), faces.end(), [&](int f) { return folded(f); }));
+  }
+
+  Eigen::Vector3d neighbour_mean(int v) const
+  {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for(int w : next_[std::size_t(v)]) mean += points_.row(w).transpose();
+    return mean / double(next_[std::size_t(v)].size());
+  }
+
+  // Moves `vertices` onto the surface's points nearest `targets` unless that
+  // leaves more than `allowed` faces around them folded (a seam vertex moved
+  // across a neighbour's chord turns over the sliver between them); whether
+  // they moved.
+  bool move(const std::vector<int>& vertices, const std::vector<Eigen::Vector3d>& targets, int allowed)
+  {
+    moved_ = vertices;
+    old_.clear();
+    for(std::size_t i = 0; i < vertices.size(); ++i) {
+      old_.push_back(points_.row(vertices[i]));
+      points_.row(vertices[i]) = nearest_->closest_point(targets[i]).transpose();
+    }
+    if(folded_around(vertices) <= allowed) return true;
+    undo_last_move();
+    return false;
+  }
+
+  void undo_last_move()
+  {
+    for(std::size_t i = 0; i < moved_.size(); ++i) points_.row(moved_[i]) = old_[i];
+  }
+
+  const Indexed_mesh& mesh_;
+  Point_matrix points_;
+  std::vector<std::vector<int>> along_, next_, faces_at_;
+  std::vector<bool> movable_;
+  std::vector<int> moving_;
+  std::unique_ptr<Nearest_surface> nearest_;
+  std::vector<int> moved_; // by the last move(), from `old_`
+  std::vector<Eigen::RowVector3d> old_;
+};
+
+} // namespace
 
 Point_matrix smoothed_seams(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
                             const std::set<std::pair<int, int>>& merged, const Indexed_mesh& surface,
                             int iterations)
 {
-  // Per vertex, its neighbours along merged seams and all its neighbours; a
-  // vertex on any other seam stays.
-  const std::size_t n = std::size_t(mesh.points.rows());
-  std::vector<std::vector<int>> along(n), next(n);
-  std::vector<bool> kept(n, false);
-  for(const auto& [edge, faces] : faces_of_edges(mesh)) {
-    next[std::size_t(edge.first)].push_back(edge.second);
-    next[std::size_t(edge.second)].push_back(edge.first);
-    if(faces.size() != 2) continue;
-    const int a = face_labels[std::size_t(faces[0])], b = face_labels[std::size_t(faces[1])];
-    if(a == b) continue;
-    if(merged.count({std::min(a, b), std::max(a, b)})) {
-      along[std::size_t(edge.first)].push_back(edge.second);
-      along[std::size_t(edge.second)].push_back(edge.first);
-    } else
-      kept[std::size_t(edge.first)] = kept[std::size_t(edge.second)] = true;
-  }
-  std::vector<int> moving;
-  for(std::size_t v = 0; v < n; ++v)
-    if(along[v].size() == 2 && !kept[v]) moving.push_back(int(v));
-  Point_matrix points = mesh.points;
-  if(moving.empty() || surface.triangles.empty()) return points;
-  const Nearest_surface nearest(surface);
-  std::vector<std::vector<int>> faces_at(n);
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for(int v : mesh.triangles[f]) faces_at[std::size_t(v)].push_back(int(f));
-  const auto folded_around = [&](int v) {
-    int count = 0;
-    for(int f : faces_at[std::size_t(v)]) {
-      const Triangle& t = mesh.triangles[std::size_t(f)];
-      count += nearest.folded(points.row(t[0]).transpose(), points.row(t[1]).transpose(), points.row(t[2]).transpose());
-    }
-    return count;
-  };
-  // Moves `v` onto the surface's point nearest `target` unless that folds
-  // more faces around it than `allowed` (a seam vertex moved across a
-  // neighbour's chord turns over the sliver between them); whether it moved.
-  const auto move = [&](int v, const Eigen::Vector3d& target, int allowed) {
-    const Eigen::RowVector3d old = points.row(v);
-    points.row(v) = nearest.closest_point(target).transpose();
-    if(folded_around(v) <= allowed) return true;
-    points.row(v) = old;
-    return false;
-  };
-  for(int i = 0; i < iterations; ++i) {
-    const Point_matrix before = points;
-    for(int v : moving) {
-      const std::vector<int>& a = along[std::size_t(v)];
-      move(v, (0.5 * before.row(v) + 0.25 * (before.row(a[0]) + before.row(a[1]))).transpose(), folded_around(v));
-    }
-  }
-  // Faces the correspondence left folded at a seam, such as a sliver whose
-  // three corners are on one seam, turn back when a corner moves towards the
-  // mean of its neighbours, some by part of the way; only moves that unfold
-  // are kept.
-  for(int pass = 0; pass < iterations; ++pass)
-    for(int v : moving) {
-      const int folded = folded_around(v);
-      if(folded == 0) continue;
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for(int w : next[std::size_t(v)]) mean += points.row(w).transpose();
-      mean /= double(next[std::size_t(v)].size());
-      const Eigen::Vector3d start = points.row(v).transpose();
-      for(double step : {1., 0.5, 0.25, 2.})
-        if(move(v, start + step * (mean - start), folded - 1)) break;
-    }
-  return points;
+  Seam_smoother smoother(mesh, face_labels, merged, surface);
+  if(!smoother.active()) return mesh.points;
+  for(int i = 0; i < iterations; ++i) smoother.straighten();
+  // Faces the correspondence left folded at a seam.
+  for(int pass = 0; pass < iterations; ++pass) smoother.unfold_vertices();
+  smoother.unfold_faces();
+  return smoother.points();
 }
 
 } // namespace internal

@@ -26,7 +26,8 @@ namespace internal {
 // (`folded_faces()`) is not made: a seam vertex moved across a neighbour's
 // chord turns the sliver between them over. Then each seam vertex of a face
 // still folded moves towards the mean of its neighbours where that unfolds
-// faces. Returns the new positions of `mesh`.
+// faces, and last the seam corners of each face still folded move so
+// together. Returns the new positions of `mesh`.
 Point_matrix smoothed_seams(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
                             const std::set<std::pair<int, int>>& merged, const Indexed_mesh& surface,
                             int iterations = 8);
