@@ -64,16 +64,20 @@ public:
   }
 
   // Each vertex of a folded face towards the mean of its neighbours (all
-  // the way, half, a quarter or twice), where that unfolds faces.
-  void unfold_vertices()
+  // the way, half, a quarter or twice), where that unfolds faces; whether
+  // any vertex had a folded face around it.
+  bool unfold_vertices()
   {
+    bool any = false;
     for(int v : moving_) {
       const int folded = folded_around({v});
       if(folded == 0) continue;
+      any = true;
       const Eigen::Vector3d start = points_.row(v).transpose(), mean = neighbour_mean(v);
       for(double step : {1., 0.5, 0.25, 2.})
         if(move({v}, {start + step * (mean - start)}, folded - 1)) break;
     }
+    return any;
   }
 
   // The movable corners of each face still folded towards the means of
@@ -171,7 +175,8 @@ Point_matrix smoothed_seams(const Indexed_mesh& mesh, const std::vector<int>& fa
   if(!smoother.active()) return mesh.points;
   for(int i = 0; i < iterations; ++i) smoother.straighten();
   // Faces the correspondence left folded at a seam.
-  for(int pass = 0; pass < iterations; ++pass) smoother.unfold_vertices();
+  for(int pass = 0; pass < iterations; ++pass)
+    if(!smoother.unfold_vertices()) break;
   smoother.unfold_faces();
   return smoother.points();
 }

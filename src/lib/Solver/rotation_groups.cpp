@@ -84,9 +84,9 @@ void Rotation_groups::fit(const std::vector<Cluster_data>& clusters, const Point
 Eigen::Matrix3d Rotation_groups::edge_transform(int c, const Weighted_edge& e,
                                                 const std::vector<Eigen::Matrix3d>& rotations) const
 {
+  if(!per_vertex_) return cluster_transform(c, rotations);
   const int first = first_group_[std::size_t(c)];
-  if(per_vertex_) return 0.5 * (rotations[std::size_t(first + e.i)] + rotations[std::size_t(first + e.j)]);
-  return rotations[std::size_t(first)];
+  return 0.5 * (rotations[std::size_t(first + e.i)] + rotations[std::size_t(first + e.j)]);
 }
 
 } // namespace embedding
