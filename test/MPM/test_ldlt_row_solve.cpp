@@ -1,8 +1,11 @@
 #include <CGAL/MPM/internal/Ldlt_row_solve.h>
+#include <CGAL/MPM/internal/Vertex_block.h>
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <memory>
 #include <vector>
 
 using namespace CGAL::MPM;
@@ -56,4 +59,41 @@ TEST(Ldlt_row_solve, agrees_with_eigens_solve)
     EXPECT_LE((rows - reference).norm(), 1e-13 * reference.norm()) << columns << " columns";
     EXPECT_LT((a * rows - b).norm(), 1e-8 * b.norm()) << columns << " columns";
   }
+}
+
+// X^T A^-1 X for operands local to patches of the mesh (the solver's
+// cluster operands), from the elimination tree, against solving every
+// column through the whole factor (the reference) and against Eigen's
+// solve. The operands overlap, one repeats a row (its values add up), and
+// their widths differ.
+TEST(Ldlt_inverse_gram, agrees_with_solving_every_column)
+{
+  const Eigen::SparseMatrix<double> a = vertex_block_like(3000);
+  const std::unique_ptr<internal::embedding::Vertex_block> block =
+    internal::embedding::make_vertex_block(Sparse_solver::simplicial_ldlt);
+  ASSERT_TRUE(block->factor(a, Eigen::VectorXd::Zero(a.rows())));
+  std::vector<internal::Local_columns> operands;
+  const int n = static_cast<int>(a.rows());
+  for(int first = 0, width = 3; first < n; first += n / 7, width = 3 + (width % 9))
+  {
+    internal::Local_columns o;
+    for(int v = first; v < std::min(n, first + n / 5); ++v) o.rows.push_back(v);
+    o.rows.push_back(first);
+    o.values = Eigen::MatrixXd::Random(Eigen::Index(o.rows.size()), width);
+    operands.push_back(std::move(o));
+  }
+  const std::vector<Eigen::Index> offset = internal::column_offsets(operands);
+  Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, offset.back());
+  for(std::size_t o = 0; o < operands.size(); ++o)
+    for(std::size_t i = 0; i < operands[o].rows.size(); ++i)
+      x.block(operands[o].rows[i], offset[o], 1, operands[o].values.cols()) += operands[o].values.row(Eigen::Index(i));
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+  const Eigen::MatrixXd eigen = x.transpose() * ldlt.solve(x);
+  const Eigen::MatrixXd reference = internal::embedding::inverse_gram_by_solves(*block, operands);
+  const Eigen::MatrixXd tree = block->inverse_gram(operands);
+  ASSERT_EQ(tree.rows(), offset.back());
+  ASSERT_EQ(tree.cols(), offset.back());
+  EXPECT_LE((reference - eigen).norm(), 1e-12 * eigen.norm());
+  EXPECT_LE((tree - reference).norm(), 1e-12 * reference.norm());
+  EXPECT_EQ(tree, tree.transpose());
 }

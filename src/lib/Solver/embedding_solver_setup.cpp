@@ -8,9 +8,13 @@
 #include <CGAL/MPM/internal/Cotangent_weights.h>
 
 #include <boost/pending/disjoint_sets.hpp>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <string>
 
@@ -39,8 +43,7 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
   require(o.anderson_history >= 0, "anderson_history", o.anderson_history, "non-negative");
   if(!problem.mesh.points.allFinite())
     throw Input_error("embedding problem", "rest positions", "contain non-finite coordinates");
-  for(std::size_t c = 0; c < problem.clusters.size(); ++c)
-    prepare_cluster(problem.clusters[c], problem.sigma_sub, static_cast<int>(c));
+  prepare_clusters(problem);
 
   std::vector<Eigen::Triplet<double>> triplets;
   for(const Cluster_data& c : clusters)
@@ -100,7 +103,35 @@ Embedding_solver::Impl::Impl(const Embedding_problem& problem, const Embedding_o
   local_step();
 }
 
-void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub, int index)
+// Clusters are independent until their coordinates are numbered: they are
+// prepared in parallel (TBB), and the first bad one in order is reported.
+void Embedding_solver::Impl::prepare_clusters(const Embedding_problem& problem)
+{
+  std::vector<Cluster_data> prepared(problem.clusters.size());
+  std::vector<std::exception_ptr> failure(problem.clusters.size());
+  const auto prepare = [&](std::size_t c) {
+    try {
+      prepared[c] = prepared_cluster(problem.clusters[c], problem.sigma_sub, static_cast<int>(c));
+    } catch(...) {
+      failure[c] = std::current_exception();
+    }
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(std::size_t(0), problem.clusters.size(), prepare);
+#else
+  for(std::size_t c = 0; c < problem.clusters.size(); ++c) prepare(c);
+#endif
+  for(const std::exception_ptr& e : failure)
+    if(e) std::rethrow_exception(e);
+  for(Cluster_data& d : prepared)
+  {
+    d.offset = total_modes;
+    total_modes += d.number_of_modes();
+  }
+  clusters = std::move(prepared);
+}
+
+Cluster_data Embedding_solver::Impl::prepared_cluster(const Cluster& c, double sigma_sub, int index) const
 {
   const std::string name = c.name.empty() ? "cluster " + std::to_string(index) : c.name;
   const int nc = static_cast<int>(c.vertices.size());
@@ -166,9 +197,7 @@ void Embedding_solver::Impl::prepare_cluster(const Cluster& c, double sigma_sub,
     d.modes.push_back(std::move(b));
   }
   d.prior = (0.25 * c.sigmas.array().square().inverse()).matrix();
-  d.offset = total_modes;
-  total_modes += c.modes.cols();
-  clusters.push_back(std::move(d));
+  return d;
 }
 
 Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const

@@ -32,54 +32,41 @@ void Schur_blocks::build(const std::vector<Cluster_data>& clusters, const std::v
   build_inverse_blocks(clusters, cluster_of_mode, block);
 }
 
-// H, G, Q and P of A_f, from A_f^-1 of every operand L_c B_ck and L_c M_c.
+// H, G, Q and P of A_f: 3x3 blocks of X^T A_f^-1 X, X = [L_c B_c1 .. L_c B_cm L_c M_c]
+// for every cluster c, each local to its cluster.
 void Schur_blocks::build_inverse_blocks(const std::vector<Cluster_data>& clusters, const std::vector<int>& cluster_of_mode,
                                         const Vertex_block& block)
 {
   const int dm = static_cast<int>(cluster_of_mode.size()), nc = static_cast<int>(clusters.size());
-  const int n = static_cast<int>(block.factored_matrix().rows());
+  std::vector<Local_columns> operands(clusters.size());
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+  {
+    const Cluster_data& d = clusters[c];
+    operands[c].rows = d.vertices;
+    operands[c].values.resize(Eigen::Index(d.vertices.size()), 3 * (d.number_of_modes() + 1));
+    for(int k = 0; k < d.number_of_modes(); ++k) operands[c].values.middleCols<3>(3 * k) = d.laplacian_modes[std::size_t(k)];
+    operands[c].values.rightCols<3>() = d.laplacian_mean;
+  }
+  const Eigen::MatrixXd gram = block.inverse_gram(operands);
+  const std::vector<Eigen::Index> offset = column_offsets(operands);
+  const auto mode_column = [&](int a) {
+    const int c = cluster_of_mode[std::size_t(a)];
+    return offset[std::size_t(c)] + 3 * (a - clusters[std::size_t(c)].offset);
+  };
+  const auto mean_column = [&](int c) { return offset[std::size_t(c) + 1] - 3; };
   h_blocks.assign(std::size_t(dm) * dm, Eigen::Matrix3d::Zero());
   g_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
   qlm_blocks.assign(std::size_t(dm) * nc, Eigen::Matrix3d::Zero());
   plm_blocks.assign(std::size_t(nc) * nc, Eigen::Matrix3d::Zero());
-  // Right-hand sides are solved in batches to bound memory on large models.
-  const int columns = dm + nc;
-  const int batch = 16;
-  for(int first = 0; first < columns; first += batch)
+  for(int a = 0; a < dm; ++a)
   {
-    const int count = std::min(batch, columns - first);
-    Eigen::MatrixXd rhs(n, 3 * count);
-    for(int j = 0; j < count; ++j)
-    {
-      const int column = first + j;
-      if(column < dm)
-      {
-        const Cluster_data& d = clusters[cluster_of_mode[column]];
-        rhs.middleCols<3>(3 * j) = scatter(d, d.laplacian_modes[column - d.offset], n);
-      }
-      else
-        rhs.middleCols<3>(3 * j) = scatter(clusters[column - dm], clusters[column - dm].laplacian_mean, n);
-    }
-    const Eigen::MatrixXd solved = block.solve_factored(rhs); // the update is applied below
-    for(const Cluster_data& c : clusters)
-    {
-      const int ci = static_cast<int>(&c - clusters.data());
-      const Eigen::MatrixXd local = gather(c, solved);
-      for(int j = 0; j < count; ++j)
-      {
-        const int column = first + j;
-        const Eigen::Matrix3d with_mean = local.middleCols<3>(3 * j).transpose() * c.laplacian_mean;
-        if(column < dm) qlm_blocks[std::size_t(column) * nc + ci] = with_mean;
-        else plm_blocks[std::size_t(column - dm) * nc + ci] = with_mean;
-        for(int k = 0; k < c.number_of_modes(); ++k)
-        {
-          const Eigen::Matrix3d mode_block = c.laplacian_modes[k].transpose() * local.middleCols<3>(3 * j);
-          if(column < dm) h_blocks[std::size_t(c.offset + k) * dm + column] = mode_block;
-          else g_blocks[std::size_t(c.offset + k) * nc + (column - dm)] = mode_block;
-        }
-      }
-    }
+    for(int b = 0; b < dm; ++b) h_blocks[std::size_t(a) * dm + b] = gram.block<3, 3>(mode_column(a), mode_column(b));
+    for(int d = 0; d < nc; ++d)
+      g_blocks[std::size_t(a) * nc + d] = qlm_blocks[std::size_t(a) * nc + d] =
+        gram.block<3, 3>(mode_column(a), mean_column(d));
   }
+  for(int d = 0; d < nc; ++d)
+    for(int c = 0; c < nc; ++c) plm_blocks[std::size_t(d) * nc + c] = gram.block<3, 3>(mean_column(d), mean_column(c));
   h_base = h_blocks;
   g_base = g_blocks;
   plm_base = plm_blocks;

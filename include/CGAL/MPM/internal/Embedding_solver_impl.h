@@ -131,7 +131,8 @@ struct Embedding_solver::Impl
   Iteration_timings timings; // of the last iterate()
 
   Impl(const Embedding_problem& problem, const Embedding_options& o);
-  void prepare_cluster(const Cluster& c, double sigma_sub, int index);
+  void prepare_clusters(const Embedding_problem& problem);
+  Cluster_data prepared_cluster(const Cluster& c, double sigma_sub, int index) const;
   void compute_anchor();
   Eigen::VectorXd anchor_for(const std::vector<int>& handles) const;
   Eigen::VectorXd diagonal_terms(const std::vector<int>& handles) const;

@@ -4,6 +4,7 @@
 #define CGAL_MPM_INTERNAL_VERTEX_BLOCK_H
 
 #include <CGAL/MPM/Solver/Embedding_solver.h>
+#include <CGAL/MPM/internal/Ldlt_inverse_gram.h>
 #include <CGAL/MPM/internal/Ldlt_row_solve.h>
 
 #include <CGAL/Eigen_solver_traits.h>
@@ -66,6 +67,9 @@ public:
   virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const = 0;
   /// `A_f^-1 b`, ignoring the update.
   virtual Eigen::MatrixXd solve_factored(const Eigen::MatrixXd& b) const = 0;
+  /// `X^T A_f^-1 X` for operands `X` local to a few vertices each (see
+  /// `ldlt_inverse_gram()`), ignoring the update.
+  virtual Eigen::MatrixXd inverse_gram(const std::vector<Local_columns>& operands) const = 0;
   /// `A x`.
   virtual Eigen::MatrixXd product(const Eigen::MatrixXd& x) const = 0;
   /// `A_f`.
@@ -165,6 +169,8 @@ public:
     return traits_.solver().solve(b);
   }
 
+  Eigen::MatrixXd inverse_gram(const std::vector<Local_columns>& operands) const override;
+
   Eigen::MatrixXd product(const Eigen::MatrixXd& x) const override
   {
     Eigen::MatrixXd product = system_ * x;
@@ -191,6 +197,20 @@ private:
   Eigen::MatrixXd columns_;
   Eigen::MatrixXd capacitance_inverse_;
 };
+
+/// `X^T A_f^-1 X` by solving every column of `X` through the whole factor
+/// (`Vertex_block::solve_factored()`), in batches: the reference of
+/// `Vertex_block::inverse_gram()`.
+Eigen::MatrixXd inverse_gram_by_solves(const Vertex_block& block, const std::vector<Local_columns>& operands);
+
+// An LDLT factor has an elimination tree to follow; other factors solve.
+template <class SolverTraits>
+Eigen::MatrixXd Factored_vertex_block<SolverTraits>::inverse_gram(const std::vector<Local_columns>& operands) const
+{
+  if constexpr(std::is_same_v<typename SolverTraits::Solver, Eigen::SimplicialLDLT<Sparse>>)
+    return ldlt_inverse_gram(traits_.solver(), operands);
+  return inverse_gram_by_solves(*this, operands);
+}
 
 /// The factored vertex block of the kind `which` (the Cholmod one only when
 /// built with it).
