@@ -113,8 +113,9 @@ out += ["",
         "does, are the comparison at equal output. Nor is it the same deformation: one rotation for the whole",
         "mesh is linear elasticity around one best rotation, stiffer against local bending than ARAP's per-vertex",
         "rotations. The synthetic models (tens of clusters with shape modes) are the like-for-like case.",
-        "Where MPM is slower: the factorization on the synthetic models (it also precomputes one solve of the",
-        "vertex block per cluster and mode) and the direct reference step; the schur step gains little on the 66k spider."]
+        "Where MPM is slower: the direct reference step, and the factorization with CHOLMOD (its blocks solve every",
+        "column through the whole factor; the LDLT factor follows its elimination tree instead, `ldlt_inverse_gram()`);",
+        "the schur step gains little on the 66k spider."]
 # What users feel: the wait after choosing handles, and a drag frame, both to convergence.
 with_iterations = lambda b: "-" if not b else "%s (%s)" % (fmt(ms(b)), fmt(b.get("iterations_per_frame"), "%.0f"))
 out += ["", "## What a user waits for", "",
