@@ -6,11 +6,9 @@
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Cotangent_weights.h>
+#include <CGAL/MPM/internal/Parallel_for.h>
 
 #include <boost/pending/disjoint_sets.hpp>
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -116,11 +114,7 @@ void Embedding_solver::Impl::prepare_clusters(const Embedding_problem& problem)
       failure[c] = std::current_exception();
     }
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(std::size_t(0), problem.clusters.size(), prepare);
-#else
-  for(std::size_t c = 0; c < problem.clusters.size(); ++c) prepare(c);
-#endif
+  internal::parallel_for_each_index(problem.clusters.size(), prepare);
   for(const std::exception_ptr& e : failure)
     if(e) std::rethrow_exception(e);
   for(Cluster_data& d : prepared)

@@ -3,11 +3,9 @@
 #include <CGAL/MPM/internal/Embedding_solver_impl.h>
 
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Parallel_for.h>
 
 #include <Eigen/Cholesky>
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -366,11 +364,7 @@ double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::Vec
   // does not depend on the scheduling.
   std::vector<double> terms(clusters.size());
   const auto term = [&](std::size_t c) { terms[c] = cluster_energy(c, v, lambda); };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(std::size_t(0), clusters.size(), term);
-#else
-  for(std::size_t c = 0; c < clusters.size(); ++c) term(c);
-#endif
+  internal::parallel_for_each_index(clusters.size(), term);
   double e = 0.;
   for(double t : terms) e += t;
   e += lambda.dot(coupling * lambda);

@@ -2,9 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/internal/Ldlt_inverse_gram.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_for.h>
-#endif
+#include <CGAL/MPM/internal/Parallel_for.h>
 
 #include <algorithm>
 #include <utility>
@@ -17,16 +15,6 @@ namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
 using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-template <class Body>
-void for_each_index(std::size_t count, const Body& body)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(std::size_t(0), count, body);
-#else
-  for(std::size_t i = 0; i < count; ++i) body(i);
-#endif
-}
 
 // What the factor says about one operand: `z = L^-1 P X` on the rows it
 // can reach (ascending), and `D^-1 z`.
@@ -143,14 +131,14 @@ Eigen::MatrixXd ldlt_inverse_gram(const Eigen::SimplicialLDLT<Sparse>& ldlt, con
 {
   const Forward_solver forward(ldlt);
   std::vector<Forward_solution> solutions(operands.size());
-  for_each_index(operands.size(), [&](std::size_t o) { solutions[o] = forward.solve(operands[o]); });
+  parallel_for_each_index(operands.size(), [&](std::size_t o) { solutions[o] = forward.solve(operands[o]); });
 
   const std::vector<Eigen::Index> offset = column_offsets(operands);
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for(std::size_t a = 0; a < operands.size(); ++a)
     for(std::size_t b = a; b < operands.size(); ++b) pairs.emplace_back(a, b);
   Eigen::MatrixXd gram(offset.back(), offset.back());
-  for_each_index(pairs.size(), [&](std::size_t k) {
+  parallel_for_each_index(pairs.size(), [&](std::size_t k) {
     const auto [a, b] = pairs[k];
     Eigen::MatrixXd block = meeting_product(solutions[a], solutions[b]);
     if(a == b) block = 0.5 * (block + block.transpose()).eval(); // symmetric to the last bit
