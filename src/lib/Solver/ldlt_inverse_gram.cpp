@@ -29,7 +29,7 @@ class Forward_solver
 {
 public:
   explicit Forward_solver(const Eigen::SimplicialLDLT<Sparse>& ldlt)
-    : ldlt_(ldlt), l_(compressed(ldlt.matrixL().nestedExpression())), d_(ldlt.vectorD()), n_(int(l_.rows()))
+    : ldlt_(ldlt), l_(compressed(ldlt.matrixL().nestedExpression(), copy_)), d_(ldlt.vectorD()), n_(int(l_.rows()))
   {
     const int* const outer = l_.outerIndexPtr();
     const int* const inner = l_.innerIndexPtr();
@@ -80,11 +80,13 @@ public:
   }
 
 private:
-  static Sparse compressed(const Sparse& l)
+  // `l` itself when compressed (Eigen's factor is), else a compressed copy in `copy`.
+  static const Sparse& compressed(const Sparse& l, Sparse& copy)
   {
-    Sparse c = l;
-    c.makeCompressed();
-    return c;
+    if(l.isCompressed()) return l;
+    copy = l;
+    copy.makeCompressed();
+    return copy;
   }
 
   int permuted(int row) const
@@ -93,7 +95,8 @@ private:
   }
 
   const Eigen::SimplicialLDLT<Sparse>& ldlt_;
-  Sparse l_;
+  Sparse copy_;
+  const Sparse& l_;
   Eigen::VectorXd d_; // vectorD() returns a copy
   int n_;
   std::vector<int> parent_;
