@@ -270,6 +270,7 @@ void Embedding_solver::Impl::factor()
 
   if(global_step->uses_blocks()) schur.build(clusters, cluster_of_mode, coupling, *block);
   factored_rotations.clear();
+  solved_rotations.clear();
 }
 
 // Accepts `vertices` as a low-rank change of the factored block when few
@@ -284,6 +285,7 @@ bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
   handle_columns_valid = false;
   if(global_step->uses_blocks()) schur.update(clusters, *block);
   factored_rotations.clear();
+  solved_rotations.clear();
   return true;
 }
 

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace CGAL {
@@ -190,6 +191,37 @@ double Embedding_solver::Impl::settle_at_rotations(Iteration_timings* timings)
   implicit = true;
   positions_valid = false;
   return e;
+}
+
+// A drag moves its handles a little each frame, and each cluster turns on
+// much as it turned in the frame before: the solve starts at the rotations
+// so predicted (each the last solve's turned once more by its last turn)
+// when they give a lower energy than the last solve's. Returns the energy
+// it starts from.
+double Embedding_solver::Impl::start_at_predicted_rotations(double energy)
+{
+  if(solved_rotations.size() < 2 || solved_rotations.back() != rotations) return energy;
+  const std::vector<Eigen::Matrix3d>& before = solved_rotations.front();
+  State kept = save();
+  for(std::size_t c = 0; c < rotations.size(); ++c) rotations[c] = rotations[c] * (before[c].transpose() * rotations[c]);
+  double predicted = std::numeric_limits<double>::infinity();
+  try
+  {
+    predicted = settle_at_rotations();
+  }
+  catch(const Computation_error&)
+  {
+    // A turn too large for the coordinate system is only a failed guess.
+  }
+  if(predicted < energy) return predicted;
+  restore(std::move(kept));
+  return energy;
+}
+
+void Embedding_solver::Impl::remember_solved_rotations()
+{
+  solved_rotations.push_back(rotations);
+  if(solved_rotations.size() > 2) solved_rotations.erase(solved_rotations.begin());
 }
 
 // From the rest state, start at the best rigid placement of the handles

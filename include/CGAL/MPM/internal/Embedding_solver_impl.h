@@ -98,6 +98,9 @@ struct Embedding_solver::Impl
   // step after a global step factors the same system. Emptied whenever the
   // blocks S is made of change.
   mutable Eigen::LLT<Eigen::MatrixXd> coordinate_llt;
+  // The rotations at the end of the last two solves with this handle set,
+  // the older first (start_at_predicted_rotations()).
+  std::vector<std::vector<Eigen::Matrix3d>> solved_rotations;
   mutable Eigen::VectorXd coordinate_rhs;
   mutable std::vector<Eigen::Matrix3d> factored_rotations;
   bool factored = false;
@@ -145,6 +148,8 @@ struct Embedding_solver::Impl
   void local_step();
   Eigen::Matrix3d fit_covariance(int c, const std::vector<Eigen::Matrix3d>& r) const;
   void start_at_rigid_fit_of_handles();
+  double start_at_predicted_rotations(double energy);
+  void remember_solved_rotations();
   Eigen::VectorXd packed_state() const;
   double enter_state(const Eigen::VectorXd& x);
   bool take_if_lower(const Eigen::VectorXd& candidate, const Eigen::VectorXd& plain, double& energy);
