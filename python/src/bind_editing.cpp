@@ -54,6 +54,7 @@ Embedding_options to_solver_options(const py::kwargs& kwargs)
     else if(key == "coupling_weight") o.coupling_weight = value.cast<double>();
     else if(key == "newton") o.newton = value.cast<bool>();
     else if(key == "quasi_newton") o.quasi_newton = value.cast<bool>();
+    else if(key == "predict_rotations") o.predict_rotations = value.cast<bool>();
     else if(key == "anderson_history") o.anderson_history = value.cast<int>();
     else if(key == "global_step")
       o.global_step = parse_choice<Global_step>(
@@ -67,7 +68,7 @@ Embedding_options to_solver_options(const py::kwargs& kwargs)
     else
       throw py::value_error("unknown solver option \"" + key +
                             "\" (allowed: max_iterations, tolerance, handle_weight, anchor_weight, coupling_weight, "
-                            "newton, quasi_newton, anderson_history, global_step, rotations, sparse_solver)");
+                            "newton, quasi_newton, predict_rotations, anderson_history, global_step, rotations, sparse_solver)");
   }
   if(!(o.max_iterations >= 1)) throw py::value_error("max_iterations: must be at least 1");
   if(!(o.tolerance >= 0.)) throw py::value_error("tolerance: must be a non-negative number");
@@ -265,7 +266,8 @@ edit: "deform" (free-form, handles pull within the learned space),
   "caricature" (coordinates scaled by factor; < 0: anti-shape).
 options: solver options max_iterations (100), tolerance (1e-6),
   handle_weight (100), anchor_weight, coupling_weight, newton (True),
-  quasi_newton, anderson_history, global_step ("reduced", "schur",
+  quasi_newton, predict_rotations (True: a drag's solve starts at the
+  rotations its last turn predicts), anderson_history, global_step ("reduced", "schur",
   "direct"), rotations ("per_cluster", "per_vertex"), sparse_solver.
 
 Set handles once (set_handles factors), then move their targets and solve

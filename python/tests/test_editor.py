@@ -49,6 +49,27 @@ def test_moving_targets_gives_what_a_new_solver_gives(hand_model, pose_handles):
     assert np.abs(editor.positions - fresh).max() <= 1e-9 * np.ptp(fresh, axis=0).max()
 
 
+def test_predicted_rotations_land_where_plain_drags_land_in_fewer_iterations(hand_model, pose_handles):
+    vertices, targets = pose_handles
+    predicted, plain = mpm.Editor(hand_model), mpm.Editor(hand_model, predict_rotations=False)
+    start = targets * 0 + predicted.rest_V[vertices]
+    predicted.set_handles(vertices, start.copy())
+    plain.set_handles(vertices, start.copy())
+    step = 0.004 * np.ptp(predicted.rest_V, axis=0).max()
+    moved = start.copy()
+    iterations = {"predicted": 0, "plain": 0}
+    for frame in range(8):
+        a, report_a = drag(predicted, moved.copy(), 0, 0.0)
+        b, report_b = drag(plain, moved.copy(), 0, 0.0)
+        assert report_a["converged"] and report_b["converged"]
+        assert np.abs(a - b).max() <= 1e-4 * np.ptp(b, axis=0).max()
+        if frame >= 2:
+            iterations["predicted"] += report_a["iterations"]
+            iterations["plain"] += report_b["iterations"]
+        moved[0] += step
+    assert iterations["predicted"] < iterations["plain"]
+
+
 def test_a_thousand_drags_do_not_leak(hand_model):
     vertices, targets = mpm.handles_per_part(hand_model, 1)
     editor = mpm.Editor(hand_model)
