@@ -202,7 +202,9 @@ double Embedding_solver::Impl::start_at_predicted_rotations(double energy)
 {
   if(solved_rotations.size() < 2 || solved_rotations.back() != rotations) return energy;
   const std::vector<Eigen::Matrix3d>& before = solved_rotations.front();
-  State kept = save();
+  // The state is implicit (rotations, coordinates and blocks), positions are not kept.
+  const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
+  const Eigen::VectorXd kept_coordinates = coordinates;
   for(std::size_t c = 0; c < rotations.size(); ++c) rotations[c] = rotations[c] * (before[c].transpose() * rotations[c]);
   double predicted = std::numeric_limits<double>::infinity();
   try
@@ -214,7 +216,9 @@ double Embedding_solver::Impl::start_at_predicted_rotations(double energy)
     // A turn too large for the coordinate system is only a failed guess.
   }
   if(predicted < energy) return predicted;
-  restore(std::move(kept));
+  rotations = kept_rotations;
+  coordinates = kept_coordinates;
+  w_blocks = kept_w;
   return energy;
 }
 
