@@ -202,7 +202,11 @@ struct Seam_point
 // What a part has at a class of identified points: its own vertex, or a
 // vertex inserted into its border edge from -> to at `weight`; and where
 // it is on each of the part's border loops through it (two where the
-// part's border touches itself there).
+// part's border touches itself there). A rebuilt part whose original
+// border touched itself at a junction, but whose template's loops do not,
+// has a side there on each loop: each seam neighbour is stitched to the
+// loop it borders (octopus_124 subdivided was left open at two such
+// junctions of a root, a chain segment and a tip).
 struct Part_side
 {
   int local = -1, from = -1, to = -1;
@@ -435,19 +439,47 @@ private:
       }
   }
 
+  // Whether the part has a side at class `c` on a border loop that lies on
+  // original loop `l`.
+  bool has_side_on(int label, int c, int l) const
+  {
+    const auto sides = sides_.at(label).find(c);
+    if(sides == sides_.at(label).end()) return false;
+    const Part_border& border = borders_.at(label);
+    for(const Part_side& side : sides->second)
+      for(const auto& on : side.parameter)
+        if(border.on_loop[std::size_t(on.first)] == l) return true;
+    return false;
+  }
+
+  // The part's side at class `c` on original loop `l`; its own vertex there
+  // when `l` is -1 or none is on `l`.
+  const Part_side& side_on(int label, int c, int l) const
+  {
+    const std::vector<Part_side>& sides = sides_.at(label).at(c);
+    const Part_border& border = borders_.at(label);
+    for(const Part_side& side : sides)
+      for(const auto& on : side.parameter)
+        if(l >= 0 && border.on_loop[std::size_t(on.first)] == l) return side;
+    const auto own = std::find_if(sides.begin(), sides.end(), [](const Part_side& s) { return s.local >= 0; });
+    return own != sides.end() ? *own : sides.front();
+  }
+
   // Each part's side at every class on its border: its own vertices, and
   // every other class on its original loop between two of its own vertices.
   void split_border(int label, const Part_border& border)
   {
-    std::map<int, Part_side>& sides = sides_[label];
+    std::map<int, std::vector<Part_side>>& sides = sides_[label];
     if(on_loops_.empty()) on_loops_ = points_on_loops();
     // Own vertices of every loop first: a point near another of the part's
     // loops must not be inserted there as well.
     for(std::size_t b = 0; b < border.loops.size(); ++b)
       for(std::size_t k = 0; k < border.loops[b].size(); ++k)
       {
-        Part_side& side = sides.insert({find(border.point[b][k]), {border.loops[b][k], -1, -1, 0., {}}}).first->second;
-        side.parameter.insert({int(b), border.parameter[b][k] / sl_length(border.on_loop[b])});
+        std::vector<Part_side>& at = sides[find(border.point[b][k])];
+        auto side = std::find_if(at.begin(), at.end(), [&](const Part_side& s) { return s.local == border.loops[b][k]; });
+        if(side == at.end()) side = at.insert(at.end(), {border.loops[b][k], -1, -1, 0., {}});
+        side->parameter.insert({int(b), border.parameter[b][k] / sl_length(border.on_loop[b])});
       }
     for(std::size_t b = 0; b < border.loops.size(); ++b)
     {
@@ -472,11 +504,19 @@ private:
         {
           const int c = find(i);
           const double d = sl.wrap(direction * (parameter - start));
-          if(!(d > 0. && d < span) || sides.count(c)) continue;
-          sides[c] = {-1, loop[k], loop[next], d / span, {{int(b), parameter / sl.length}}};
+          if(!(d > 0. && d < span) || has_side_on(label, c, l)) continue;
+          sides[c].push_back({-1, loop[k], loop[next], d / span, {{int(b), parameter / sl.length}}});
         }
       }
     }
+  }
+
+  // The original loop of `label` through its border edge `e`.
+  int loop_through(int label, const Edge_key& e) const
+  {
+    for(int l : loops_of_label_.at(label))
+      if(loops_[std::size_t(l)].index_of_edge.count(e)) return l;
+    return -1;
   }
 
   // Per pair of labels sharing an original seam edge, one of them rebuilt:
@@ -497,16 +537,19 @@ private:
       for(int k = 0; k < 3; ++k)
         labels_of_edge[edge_key(original_.mesh.triangles[f][k], original_.mesh.triangles[f][(k + 1) % 3])].insert(
           original_.face_labels[f]);
-    std::map<Edge_key, std::set<int>> classes_of_pair;
+    // Per pair of labels, per class: the original loops of both labels
+    // through the seam edges it lies on.
+    std::map<Edge_key, std::map<int, std::set<Edge_key>>> classes_of_pair;
     for(const auto& [e, labels] : labels_of_edge)
     {
       if(labels.size() != 2) continue;
       const int p = *labels.begin(), q = *labels.rbegin();
       if(!detached_.count(p) && !detached_.count(q)) continue;
-      std::set<int>& classes = classes_of_pair[{p, q}];
-      for(int i : points_of_edge[e]) classes.insert(find(i));
+      const Edge_key on{loop_through(p, e), loop_through(q, e)};
+      std::map<int, std::set<Edge_key>>& classes = classes_of_pair[{p, q}];
+      for(int i : points_of_edge[e]) classes[find(i)].insert(on);
       for(int v : {e.first, e.second})
-        for(int i : points_of_vertex[v]) classes.insert(find(i));
+        for(int i : points_of_vertex[v]) classes[find(i)].insert(on);
     }
     std::vector<Stitched_seam> result;
     for(const auto& [pq, classes] : classes_of_pair)
@@ -514,25 +557,32 @@ private:
       Stitched_seam seam;
       seam.label_a = pq.first;
       seam.label_b = pq.second;
-      const std::map<int, Part_side>& a = sides_[pq.first];
-      const std::map<int, Part_side>& b = sides_[pq.second];
+      const auto& a = sides_[pq.first];
+      const auto& b = sides_[pq.second];
+      // Each side on the loop that borders the other part; where the seam
+      // passes a class on two loops (the parts touch there twice), the own
+      // vertex, so that no part is stitched to itself.
+      std::vector<std::pair<const Part_side*, const Part_side*>> stitched;
+      for(const auto& [c, on] : classes)
+      {
+        if(!a.count(c) || !b.count(c)) continue;
+        const Edge_key loops = on.size() == 1 ? *on.begin() : Edge_key{-1, -1};
+        stitched.push_back({&side_on(pq.first, c, loops.first), &side_on(pq.second, c, loops.second)});
+      }
       // The seam is ordered along the first part's border loop that most
       // of its points lie on.
       std::map<int, int> votes;
-      for(int c : classes)
-        if(a.count(c) && b.count(c))
-          for(const auto& [loop, parameter] : a.at(c).parameter) ++votes[loop];
+      for(const auto& sides : stitched)
+        for(const auto& [loop, parameter] : sides.first->parameter) ++votes[loop];
       const auto along = std::max_element(votes.begin(), votes.end(),
                                           [](const auto& x, const auto& y) { return x.second < y.second; });
-      for(int c : classes)
+      for(const auto& [sa, sb] : stitched)
       {
-        const auto sa = a.find(c), sb = b.find(c);
-        if(sa == a.end() || sb == b.end()) continue;
         Seam_vertex v;
-        const auto on_loop = sa->second.parameter.find(along->first);
-        v.parameter = on_loop != sa->second.parameter.end() ? on_loop->second : sa->second.parameter.begin()->second;
+        const auto on_loop = sa->parameter.find(along->first);
+        v.parameter = on_loop != sa->parameter.end() ? on_loop->second : sa->parameter.begin()->second;
         int side = 0;
-        for(const Part_side& s : {sa->second, sb->second})
+        for(const Part_side& s : {*sa, *sb})
         {
           v.local[side] = s.local;
           v.from[side] = s.from;
@@ -560,7 +610,7 @@ private:
   std::vector<Seam_point> points_;
   std::vector<int> classes_;
   std::map<int, Part_border> borders_;
-  std::map<int, std::map<int, Part_side>> sides_;
+  std::map<int, std::map<int, std::vector<Part_side>>> sides_;
   std::vector<std::vector<std::pair<double, int>>> on_loops_;
 };
 
