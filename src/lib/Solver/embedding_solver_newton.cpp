@@ -176,8 +176,7 @@ double Embedding_solver::Impl::newton_improve(double energy, double& damping)
   const Eigen::MatrixXd hessian = reduced_hessian();
   const Eigen::VectorXd gradient = rotation_gradient();
   const double scale = std::max(hessian.diagonal().cwiseAbs().mean(), std::numeric_limits<double>::min());
-  const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
-  const Eigen::VectorXd kept_coordinates = coordinates;
+  const Implicit_state kept = save_implicit();
   for(int attempt = 0; attempt < 4; ++attempt, damping = std::max(1e-6, 10. * damping))
   {
     Eigen::MatrixXd damped = hessian;
@@ -186,7 +185,7 @@ double Embedding_solver::Impl::newton_improve(double energy, double& damping)
     if(ldlt.info() != Eigen::Success || !ldlt.isPositive() || (ldlt.vectorD().array() <= 0.).any()) continue;
     const Eigen::VectorXd step = without_free_turns(-ldlt.solve(gradient));
     if(!step.allFinite() || gradient.dot(step) >= 0.) continue;
-    rotations = internal::retract(kept_rotations, step);
+    rotations = internal::retract(kept.rotations, step);
     double e = std::numeric_limits<double>::infinity();
     try
     {
@@ -201,9 +200,7 @@ double Embedding_solver::Impl::newton_improve(double energy, double& damping)
       damping *= 0.1;
       return e;
     }
-    rotations = kept_rotations;
-    coordinates = kept_coordinates;
-    w_blocks = kept_w;
+    restore_implicit(kept);
   }
   return energy;
 }

@@ -202,9 +202,7 @@ double Embedding_solver::Impl::start_at_predicted_rotations(double energy)
 {
   if(solved_rotations.size() < 2 || solved_rotations.back() != rotations) return energy;
   const std::vector<Eigen::Matrix3d>& before = solved_rotations.front();
-  // The state is implicit (rotations, coordinates and blocks), positions are not kept.
-  const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
-  const Eigen::VectorXd kept_coordinates = coordinates;
+  const Implicit_state kept = save_implicit();
   for(std::size_t c = 0; c < rotations.size(); ++c) rotations[c] = rotations[c] * (before[c].transpose() * rotations[c]);
   double predicted = std::numeric_limits<double>::infinity();
   try
@@ -216,9 +214,7 @@ double Embedding_solver::Impl::start_at_predicted_rotations(double energy)
     // A turn too large for the coordinate system is only a failed guess.
   }
   if(predicted < energy) return predicted;
-  rotations = kept_rotations;
-  coordinates = kept_coordinates;
-  w_blocks = kept_w;
+  restore_implicit(kept);
   return energy;
 }
 
@@ -324,8 +320,7 @@ double Embedding_solver::Impl::quasi_newton_improve(internal::Rotation_lbfgs& lb
   Eigen::VectorXd step = internal::rotation_step(start, rotations);
   if(try_step && !lbfgs.empty())
   {
-    const std::vector<Eigen::Matrix3d> kept_rotations = rotations, kept_w = w_blocks;
-    const Eigen::VectorXd kept_coordinates = coordinates;
+    const Implicit_state kept = save_implicit();
     const Eigen::VectorXd direction = lbfgs.direction(gradient);
     const double slope = gradient.dot(direction);
     bool taken = false;
@@ -340,12 +335,7 @@ double Embedding_solver::Impl::quasi_newton_improve(internal::Rotation_lbfgs& lb
         step = direction;
       }
     }
-    if(!taken)
-    {
-      rotations = kept_rotations;
-      coordinates = kept_coordinates;
-      w_blocks = kept_w;
-    }
+    if(!taken) restore_implicit(kept);
   }
   const Eigen::VectorXd g = rotation_gradient();
   lbfgs.remember(step, g - gradient);

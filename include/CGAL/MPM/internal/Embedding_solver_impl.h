@@ -200,6 +200,20 @@ struct Embedding_solver::Impl
     positions_valid = s.positions_valid;
     iterations_since_reset = s.iterations_since_reset;
   }
+  // What a trial step from settled rotations changes (positions are not
+  // materialized while the state is implicit), to go back to when it fails.
+  struct Implicit_state
+  {
+    std::vector<Eigen::Matrix3d> rotations, w_blocks;
+    Eigen::VectorXd coordinates;
+  };
+  Implicit_state save_implicit() const { return {rotations, w_blocks, coordinates}; }
+  void restore_implicit(const Implicit_state& s)
+  {
+    rotations = s.rotations;
+    w_blocks = s.w_blocks;
+    coordinates = s.coordinates;
+  }
   // The energy of one handle a bounding-box diagonal away from its target:
   // the unit below which energy changes are rounding, not divergence.
   double energy_unit() const
