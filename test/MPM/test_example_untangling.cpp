@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Untangling a learned example: faces that cross each other where the input
-// does not are moved apart on the input's surface, a vertex inside a part
-// back among its neighbours; seam vertices stay.
+// does not are moved apart on the input's surface, and faces folded over it
+// turned back, a vertex inside a part back among its neighbours; seam
+// vertices stay.
 #include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/internal/Example_untangling.h>
 
@@ -79,6 +80,26 @@ TEST(Example_untangling, seam_vertices_stay)
   const Point_matrix untangled = internal::untangled_positions(example, input.face_labels, input);
   ASSERT_EQ(untangled.rows(), input.mesh.points.rows());
   EXPECT_EQ(crossings(Indexed_mesh{untangled, input.mesh.triangles}), 0);
+  for(int s = 0; s < sides; ++s) EXPECT_EQ(untangled.row(12 * sides + s), example.points.row(12 * sides + s)) << s;
+}
+
+// A vertex next to the seam moved past it and a little off the surface:
+// two faces fold over the input without crossing any other face (a
+// template's sliver by an ant's antenna seam); they are turned back.
+TEST(Example_untangling, faces_folded_over_the_input_without_crossing_are_turned_back)
+{
+  const Labeled_mesh input = two_part_tube();
+  const int vertex = 11 * sides + 5;
+  Indexed_mesh example = tangled(input, vertex, 1.2);
+  example.points.row(vertex) *= 1.02;
+  ASSERT_EQ(crossings(example), 0);
+  ASSERT_EQ(folded_faces(example, input.mesh).size(), 2u);
+  const Point_matrix untangled = internal::untangled_positions(example, input.face_labels, input);
+  ASSERT_EQ(untangled.rows(), input.mesh.points.rows());
+  const Indexed_mesh mended{untangled, input.mesh.triangles};
+  EXPECT_TRUE(folded_faces(mended, input.mesh).empty());
+  EXPECT_EQ(crossings(mended), 0);
+  EXPECT_LT((untangled.row(vertex) - input.mesh.points.row(vertex)).norm(), 0.5 * 2. / (rings - 1));
   for(int s = 0; s < sides; ++s) EXPECT_EQ(untangled.row(12 * sides + s), example.points.row(12 * sides + s)) << s;
 }
 

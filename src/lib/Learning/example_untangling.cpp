@@ -27,21 +27,6 @@ using Mesh = CGAL::Surface_mesh<Exact_kernel::Point_3>;
 using Face = Mesh::Face_index;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-// The input's faces of each label, to project onto.
-std::map<int, Nearest_surface> surfaces_by_label(const Labeled_mesh& input)
-{
-  std::map<int, Indexed_mesh> parts;
-  for(std::size_t f = 0; f < input.mesh.triangles.size(); ++f)
-    parts[input.face_labels[f]].triangles.push_back(input.mesh.triangles[f]);
-  std::map<int, Nearest_surface> surfaces;
-  for(auto& [label, part] : parts)
-  {
-    part.points = input.mesh.points;
-    surfaces.try_emplace(label, part);
-  }
-  return surfaces;
-}
-
 // The pairs of faces of `mesh` that cross each other.
 std::vector<std::pair<int, int>> crossings_of(const Mesh& mesh)
 {
@@ -62,8 +47,17 @@ public:
 
   std::vector<std::pair<int, int>> crossing_pairs() const { return crossings_of(mesh_); }
 
+  std::vector<int> folded_faces() const
+  {
+    std::vector<int> folded;
+    for(Face f : faces(mesh_))
+      if(is_folded(f)) folded.push_back(int(f));
+    return folded;
+  }
+
   // Moves `moved` to `positions` if that lowers the crossings near them
-  // without folding more faces over the input; returns whether it did.
+  // without folding more faces over the input, or lowers the folded faces
+  // among those it touches without more crossings; returns whether it did.
   bool try_move(const std::vector<int>& moved, const Point_matrix& positions)
   {
     std::vector<Mesh::Point> before;
@@ -93,7 +87,9 @@ public:
     state(crossings_before, folded_before);
     set_points(moved, positions);
     state(crossings_after, folded_after);
-    if(crossings_after < crossings_before && folded_after <= folded_before) return true;
+    if((crossings_after < crossings_before && folded_after <= folded_before) ||
+       (folded_after < folded_before && crossings_after <= crossings_before))
+      return true;
     restore(moved, before);
     return false;
   }
@@ -168,15 +164,15 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
   {
     return {};
   }
-  // The input's crossings and its fold test only when the example crosses
-  // itself at all, which a learned example rarely does.
+  // The input's crossings only when the example crosses itself at all,
+  // which a learned example rarely does.
   std::vector<std::pair<int, int>> crossing = crossings_of(example);
-  if(crossing.empty()) return {};
   std::vector<std::pair<int, int>> own_pairs;
-  const int own = self_intersecting_faces(input.mesh, own_pairs) ? int(own_pairs.size()) : 0;
-  if(int(crossing.size()) <= own) return {};
+  const int own = !crossing.empty() && self_intersecting_faces(input.mesh, own_pairs) ? int(own_pairs.size()) : 0;
   const Nearest_surface folds(input.mesh);
   Trial_mesh trial(std::move(example), folds);
+  std::vector<int> folded = trial.folded_faces();
+  if(int(crossing.size()) <= own && folded.empty()) return {};
   // Each vertex's label; -1 on a seam (faces of two labels), where it stays:
   // a seam vertex moved would be merged anew when the model is learned
   // again, and the dockings it changed folded an ant's legs when
@@ -191,15 +187,15 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
     next[std::size_t(e.source)].push_back(e.target);
     next[std::size_t(e.target)].push_back(e.source);
   }
-  const std::map<int, Nearest_surface> surfaces = surfaces_by_label(input);
-  // A vertex inside a part to the mean of its neighbours, back onto its
-  // part of the input. The seam splits the triangles along it into fans,
-  // so a vertex next to a seam has many seam neighbours close together:
-  // they count as one, or the mean would pull it onto the seam, where the
-  // fan's slivers fold.
+  // A vertex inside a part to the mean of its neighbours, back onto the
+  // input. The seam splits the triangles along it into fans, so a vertex
+  // next to a seam has many seam neighbours close together: they count as
+  // one, or the mean would pull it onto the seam, where the fan's slivers
+  // fold. Onto the whole input, not its own part's faces: a template's
+  // first row squeezed against the seam was pinned to the part's border
+  // there, and stayed folded (ant_97's antenna).
   const auto move_to_neighbours = [&](std::size_t v, Point_matrix& points) {
-    const auto s = surfaces.find(label[v]);
-    if(s == surfaces.end() || next[v].empty()) return;
+    if(next[v].empty()) return;
     Eigen::RowVector3d inside = Eigen::RowVector3d::Zero(), seam = Eigen::RowVector3d::Zero();
     int inside_count = 0, seam_count = 0;
     for(int w : next[v])
@@ -210,17 +206,21 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
     const Eigen::RowVector3d mean =
       (inside + (seam_count ? Eigen::RowVector3d(seam / seam_count) : Eigen::RowVector3d::Zero())) /
       double(inside_count + (seam_count ? 1 : 0));
-    points.row(Eigen::Index(v)) = s->second.closest_point(mean.transpose()).transpose();
+    points.row(Eigen::Index(v)) = folds.closest_point(mean.transpose()).transpose();
   };
   Point_matrix points = mesh.points;
   bool improved = false;
-  // Each crossing pair on its own, the moved region grown ring by ring
-  // until a move lowers the crossings around it: a move that helps one
-  // place is not held back by another place it does not reach.
-  for(int pass = 0; pass < 6 && int(crossing.size()) > own; ++pass)
+  // Each crossing pair and each folded face on its own, the moved region
+  // grown ring by ring until a move takes it out: a move that helps one
+  // place is not held back by another place it does not reach. A face
+  // folded inside a part is a template's fold the correspondence's repair
+  // left (a sliver by an ant's antenna seam).
+  for(int pass = 0; pass < 6 && (int(crossing.size()) > own || !folded.empty()); ++pass)
   {
+    std::vector<std::pair<int, int>> places = int(crossing.size()) > own ? crossing : std::vector<std::pair<int, int>>();
+    for(int f : folded) places.emplace_back(f, f);
     bool moved_any = false;
-    for(const auto& [f, g] : crossing)
+    for(const auto& [f, g] : places)
       for(int rings = 0; rings <= 4; ++rings)
       {
         const std::vector<int> moved = vertices_around(mesh, {f, g}, rings, next, label);
@@ -235,6 +235,7 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
       }
     if(!moved_any) break;
     crossing = trial.crossing_pairs();
+    folded = trial.folded_faces();
   }
   return improved ? points : Point_matrix();
 }

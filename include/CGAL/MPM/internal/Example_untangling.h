@@ -13,16 +13,18 @@ namespace internal {
 
 // A learned example's faces that cross each other where its input's do not
 // (stitched templates meeting at a seam, a template's first ring folded
-// over its border) moved apart. Each crossing pair in turn: the vertices of
-// its two faces, and rings around them grown until it helps, go to the mean
-// of their neighbours (the seam vertices of a fan along a seam counting as
-// one) and back onto the input faces of their own label; a move is kept
+// over its border) moved apart, and its faces folded over the input
+// (`folded_faces()`) turned back. Each crossing pair and folded face in
+// turn: the vertices of its faces, and rings around them grown until it
+// helps, go to the mean of their neighbours (the seam vertices of a fan
+// along a seam counting as one) and back onto the input; a move is kept
 // when it lowers the crossings around it (exact predicates, as
-// `self_intersecting_faces()`) without folding more faces over the input.
+// `self_intersecting_faces()`) without folding more faces over the input,
+// or lowers the folded faces it touches without more crossings.
 // Seam vertices (of faces of two labels) stay, so the parts keep their
 // seams and dockings. `mesh` and `face_labels` are the example's; `input`
 // the labelled input it approximates. Returns the new positions, or an
-// empty matrix when no crossing could be taken out (or there was none the
+// empty matrix when nothing could be mended (or there was nothing the
 // input does not have).
 Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
                                  const Labeled_mesh& input);
