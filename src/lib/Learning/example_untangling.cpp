@@ -4,6 +4,7 @@
 
 #include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 #include <CGAL/MPM/internal/Nearest_surface.h>
@@ -12,6 +13,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <map>
+#include <set>
 
 namespace CGAL {
 namespace MPM {
@@ -26,6 +28,29 @@ using Exact_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Exact_kernel::Point_3>;
 using Face = Mesh::Face_index;
 namespace PMP = CGAL::Polygon_mesh_processing;
+
+// Per label, the input's faces of that label and of the labels it shares a
+// seam with, to project onto: a vertex beside a seam may belong on the
+// other side of it (a template's first row squeezed against its seam, which
+// the part's own faces pinned to its border: ant_97's antenna), but never
+// on a finger the part does not touch, however close.
+std::map<int, Nearest_surface> surfaces_around_labels(const Labeled_mesh& input)
+{
+  std::map<int, std::set<int>> around;
+  for(const auto& [edge, faces] : faces_of_edges(input.mesh))
+    for(int f : faces)
+      for(int g : faces) around[input.face_labels[std::size_t(f)]].insert(input.face_labels[std::size_t(g)]);
+  std::map<int, Nearest_surface> surfaces;
+  for(const auto& [label, labels] : around)
+  {
+    Indexed_mesh part;
+    part.points = input.mesh.points;
+    for(std::size_t f = 0; f < input.mesh.triangles.size(); ++f)
+      if(labels.count(input.face_labels[f])) part.triangles.push_back(input.mesh.triangles[f]);
+    surfaces.try_emplace(label, part);
+  }
+  return surfaces;
+}
 
 // The pairs of faces of `mesh` that cross each other.
 std::vector<std::pair<int, int>> crossings_of(const Mesh& mesh)
@@ -187,15 +212,15 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
     next[std::size_t(e.source)].push_back(e.target);
     next[std::size_t(e.target)].push_back(e.source);
   }
+  const std::map<int, Nearest_surface> surfaces = surfaces_around_labels(input);
   // A vertex inside a part to the mean of its neighbours, back onto the
-  // input. The seam splits the triangles along it into fans, so a vertex
-  // next to a seam has many seam neighbours close together: they count as
-  // one, or the mean would pull it onto the seam, where the fan's slivers
-  // fold. Onto the whole input, not its own part's faces: a template's
-  // first row squeezed against the seam was pinned to the part's border
-  // there, and stayed folded (ant_97's antenna).
+  // input around its part. The seam splits the triangles along it into
+  // fans, so a vertex next to a seam has many seam neighbours close
+  // together: they count as one, or the mean would pull it onto the seam,
+  // where the fan's slivers fold.
   const auto move_to_neighbours = [&](std::size_t v, Point_matrix& points) {
-    if(next[v].empty()) return;
+    const auto s = surfaces.find(label[v]);
+    if(s == surfaces.end() || next[v].empty()) return;
     Eigen::RowVector3d inside = Eigen::RowVector3d::Zero(), seam = Eigen::RowVector3d::Zero();
     int inside_count = 0, seam_count = 0;
     for(int w : next[v])
@@ -206,7 +231,7 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
     const Eigen::RowVector3d mean =
       (inside + (seam_count ? Eigen::RowVector3d(seam / seam_count) : Eigen::RowVector3d::Zero())) /
       double(inside_count + (seam_count ? 1 : 0));
-    points.row(Eigen::Index(v)) = folds.closest_point(mean.transpose()).transpose();
+    points.row(Eigen::Index(v)) = s->second.closest_point(mean.transpose()).transpose();
   };
   Point_matrix points = mesh.points;
   bool improved = false;

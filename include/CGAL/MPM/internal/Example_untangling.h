@@ -17,7 +17,8 @@ namespace internal {
 // (`folded_faces()`) turned back. Each crossing pair and folded face in
 // turn: the vertices of its faces, and rings around them grown until it
 // helps, go to the mean of their neighbours (the seam vertices of a fan
-// along a seam counting as one) and back onto the input; a move is kept
+// along a seam counting as one) and back onto the input's faces of their
+// part and of the parts it shares a seam with; a move is kept
 // when it lowers the crossings around it (exact predicates, as
 // `self_intersecting_faces()`) without folding more faces over the input,
 // or lowers the folded faces it touches without more crossings.
