@@ -286,7 +286,10 @@ Assembly_options training_assembly_options(const Morphable_part_model& model, in
   Assembly_options o;
   for(const Part_node& node : ex.graph.nodes)
   {
-    o.targets.push_back(gather_rows(ex.mesh.points, node.vertices));
+    // A node of a stitched example lists the seam vertices inserted into it
+    // after its type's own: the target is its own vertices.
+    const auto own = std::size_t(model.types[std::size_t(node.type)].number_of_vertices);
+    o.targets.push_back(gather_rows(ex.mesh.points, std::vector<int>(node.vertices.begin(), node.vertices.begin() + std::ptrdiff_t(own))));
     o.placements.push_back(Rigid_motion());
   }
   return o;

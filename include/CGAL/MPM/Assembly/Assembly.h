@@ -102,6 +102,10 @@ int crossings_of_node(const Assembly& a, int node);
 /// Options that make `assemble(model, part_graph_of_example(model, example))`
 /// reproduce training example `example`: each node's target is its
 /// instance's own rest shape and its initial placement is the instance's.
+/// Exactly for parts docked by shared seams; where corresponded parts were
+/// stitched along merged seams, the seam vertices inserted into a part's
+/// edges are interpolated on them, and the result is within about 1% of
+/// the bounding-box diagonal of the example.
 Assembly_options training_assembly_options(const Morphable_part_model& model, int example = 0);
 
 /// \ingroup PkgMPMRef
