@@ -192,8 +192,10 @@ void Session::adopt_model(MPM::Morphable_part_model&& model, const QString& sour
 {
   if(model.examples.empty()) throw MPM::Input_error(source.toStdString(), "model", "has no training example");
   cutting_.reset();
-  // Derived repetition rules let the grammar lengthen chains (a finger).
+  // Derived repetition and bridging rules let the grammar lengthen and
+  // shorten chains (a finger).
   MPM::add_repetition_rules(model);
+  MPM::add_bridging_rules(model);
   model_ = std::move(model);
   has_model_ = true;
   source_ = source;

@@ -68,6 +68,21 @@ def test_assembly_grows_a_finger_seamlessly(hand_model):
     assert len(spawned) == 3 and energies == sorted(energies)
 
 
+def test_bridging_rules_let_a_finger_lose_a_segment(hand_model):
+    model = mpm.Model.from_bytes(hand_model.to_bytes())
+    graph = mpm.part_graph(model)
+    middle = next(i for i, t in enumerate(graph.node_types(model)) if t["type"] == "middle")
+    with pytest.raises(mpm.InputError):
+        mpm.remove_segment(model, graph, middle)
+    assert mpm.add_bridging_rules(model)
+    assert not mpm.add_bridging_rules(model)
+    mpm.remove_segment(model, graph, middle)
+    result = mpm.assemble(model, graph)
+    assert result["converged"] and result["V"].shape[0] < model.examples[0]["V"].shape[0]
+    check = mpm.check_surface(result["V"], result["F"])
+    assert check["components"] == 1 and check["border_edges"] == 0
+
+
 def test_cut_then_propose_then_learn(hand):
     # Cut the synthetic hand's finger tips off along their seams: a cut
     # through the vertices a tip shares with its middle segment.

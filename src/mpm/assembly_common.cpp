@@ -18,7 +18,9 @@ using CGAL::MPM::internal::lower_extension;
 CGAL::MPM::Morphable_part_model load_model_with_grammar(const std::string& path, bool observed_only, int* derived)
 {
   CGAL::MPM::Morphable_part_model model = CGAL::MPM::load_model(path);
-  const int added = observed_only ? 0 : static_cast<int>(CGAL::MPM::add_repetition_rules(model).size());
+  int added = 0;
+  if(!observed_only)
+    added = static_cast<int>(CGAL::MPM::add_repetition_rules(model).size() + CGAL::MPM::add_bridging_rules(model).size());
   if(derived) *derived = added;
   return model;
 }

@@ -16,8 +16,9 @@
 
 namespace mpm {
 
-/// The model at `path` with the repetition rules appended unless
-/// `observed_only` (doc/MPM/Part_graphs.md); `derived` receives their count.
+/// The model at `path` with the repetition and bridging rules appended
+/// unless `observed_only` (doc/MPM/Part_graphs.md); `derived` receives
+/// their count.
 CGAL::MPM::Morphable_part_model load_model_with_grammar(const std::string& path, bool observed_only,
                                                          int* derived = nullptr);
 

@@ -7,6 +7,7 @@
 #include "assembly_common.h"
 
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Assembly/Free_site_capping.h>
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 
@@ -23,7 +24,9 @@ using namespace CGAL::MPM;
 const char* const grammar_text =
   "The grammar is the model's learned rules plus, unless --observed-only, the\n"
   "derived repetition rules (a two-site segment docked to a copy of itself: what\n"
-  "lengthens a finger), appended after the learned ones (doc/MPM/Part_graphs.md).";
+  "lengthens a finger) and bridging rules (the two neighbours of a two-site\n"
+  "segment docked to each other: what shortens it), appended after the learned\n"
+  "ones (doc/MPM/Part_graphs.md).";
 
 int example_of(const Args& args, const Morphable_part_model& model, const std::string& path)
 {
@@ -161,7 +164,7 @@ int run_assemble(const Args& args, Context& context)
   options.solver.iteration_callback =
     iteration_progress(context.progress, "embedding " + std::to_string(graph.nodes.size()) + " parts", 0.3, 0.9,
                        options.solver.max_iterations);
-  const Assembly assembly = assemble(model, graph, options);
+  Assembly assembly = assemble(model, graph, options);
   // The training graph itself, unedited, is its own reference.
   const bool is_training_graph = graph_file.empty() && edits.empty();
   context.progress.update("comparing with the training example's graph", 0.9);
@@ -171,6 +174,8 @@ int run_assemble(const Args& args, Context& context)
   for(const Arg_item& item : args.items)
     if(item.option == "close") closed.push_back("--close " + item.value);
   const std::vector<std::string> warnings = assembly_doubts(assembly, reference, closed);
+  const std::size_t solved_faces = assembly.mesh.triangles.size();
+  const int capped = args.flag("keep-holes") ? 0 : cap_free_sites(model, assembly);
   context.progress.update("writing " + output, 0.95);
   write_assembly_mesh(assembly, output, context.meshes);
   context.progress.done();
@@ -184,6 +189,8 @@ int run_assemble(const Args& args, Context& context)
   const Json details = assembly_summary(model, assembly);
   for(const auto& [key, value] : details.items()) summary[key] = value;
   summary["training_energy_per_part"] = reference;
+  summary["capped_free_sites"] = capped;
+  summary["cap_faces"] = assembly.mesh.triangles.size() - solved_faces;
   summary["warnings"] = warnings;
   summary["output"] = output;
   if(args.has("save-graph")) summary["saved_graph"] = args.text("save-graph");
@@ -196,6 +203,9 @@ int run_assemble(const Args& args, Context& context)
             << " dockings of " << path << ": " << assembly.mesh.number_of_vertices() << " vertices, "
             << assembly.mesh.number_of_faces() << " faces\n";
   for(const std::string& e : edits) std::cout << "  edit              " << e << "\n";
+  if(capped > 0)
+    std::cout << "  capped            " << capped << " free site" << (capped > 1 ? "s" : "") << " (a removed branch's hole; "
+              << assembly.mesh.triangles.size() - solved_faces << " faces)\n";
   std::cout << "  iterations        " << assembly.report.iterations
             << (assembly.report.converged ? " (converged)" : " (not converged: iteration cap)") << "\n"
             << "  residual energy   " << format_number(assembly.residual_energy, 6) << " ("
@@ -230,7 +240,7 @@ Command make_graph_command()
   c.options = {
     {"output", 'o', Value_kind::output_file, "G.json", "", "part graph file to write (required)"},
     {"example", 0, Value_kind::integer, "N", "0", "training example", 0, INT_MAX},
-    {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition rules)"},
+    {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition or bridging rules)"},
   };
   c.run = run_graph;
   return c;
@@ -254,7 +264,8 @@ Command make_assemble_command()
       "per part, per node). OUT is .off, .obj, .ply or .stl (PLY: per-face colours by type).\n"
       "An embedding that stops at the iteration cap, or whose energy per part is over\n"
       "1000 times that of the training example's graph (a cycle that cannot close),\n"
-      "is written with a warning and exit status 3.\n") +
+      "is written with a warning and exit status 3. The hole a removed branch leaves\n"
+      "at a free site is filled with a smooth cap (unless --keep-holes).\n") +
     grammar_text;
   c.min_positionals = c.max_positionals = 1;
   c.options = {
@@ -271,7 +282,8 @@ Command make_assemble_command()
     {"close", 0, Value_kind::text, "A:B", "", "dock nodes A and B at free sites (close a cycle)", -HUGE_VAL,
      HUGE_VAL, false, true},
     {"save-graph", 0, Value_kind::output_file, "G2.json", "", "also write the edited part graph"},
-    {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition rules)"},
+    {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition or bridging rules)"},
+    {"keep-holes", 0, Value_kind::flag, "", "", "leave the holes at free sites open (no cap)"},
     {"iterations", 0, Value_kind::integer, "N", std::to_string(defaults.max_iterations),
      "maximum number of solver iterations", 1, INT_MAX},
     {"tolerance", 0, Value_kind::real, "T", format_number(defaults.tolerance),

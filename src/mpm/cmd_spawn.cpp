@@ -103,7 +103,7 @@ Command make_spawn_command()
     "embeds each graph and ranks them by residual energy per part, lowest first.\n"
     "The same seed gives the same graphs and ranking. With -o, writes DIR/spawn_I.ply\n"
     "(colours by part type) and DIR/spawn_I.json (its part graph) for each draw I.\n"
-    "Repetition rules are derived as for 'mpm assemble' unless --observed-only.";
+    "Repetition and bridging rules are derived as for 'mpm assemble' unless --observed-only.";
   c.min_positionals = c.max_positionals = 1;
   c.options = {
     {"count", 0, Value_kind::integer, "N", "8", "how many graphs", 1, 100000},
@@ -111,7 +111,7 @@ Command make_spawn_command()
     {"edits", 0, Value_kind::integer, "K", "3", "most random edits per graph", 1, 1000},
     {"example", 0, Value_kind::integer, "N", "0", "training example to start from", 0, INT_MAX},
     {"output", 'o', Value_kind::output_prefix, "DIR", "", "directory for the meshes and graphs"},
-    {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition rules)"},
+    {"observed-only", 0, Value_kind::flag, "", "", "the learned rules only (no derived repetition or bridging rules)"},
     {"iterations", 0, Value_kind::integer, "N", std::to_string(defaults.max_iterations),
      "maximum number of solver iterations", 1, INT_MAX},
   };

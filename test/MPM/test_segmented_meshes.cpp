@@ -8,6 +8,7 @@
 // it closed and sound. The bounds are the measured figures with a margin
 // (doc/MPM/Real_meshes.md).
 #include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Assembly/Free_site_capping.h>
 #include <CGAL/MPM/Editing/Editing.h>
 #include <CGAL/MPM/Editing/Limb_bending.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
@@ -229,6 +230,66 @@ TEST_P(Segmented_meshes, a_segment_inserted_into_a_chain_keeps_the_surface_close
   // It was 9, 24 and 5.6e8 when one side of each seam took the targets'
   // whole disagreement and the rest tilt of merged seams was kept.
   EXPECT_LT(a.energy_per_part(), 1.) << name; // measured 0.04-0.2
+}
+
+// Chains shrink as they grow: every segment of every finger, leg and arm
+// can be removed (its neighbours docked by a bridging rule; without it no
+// learned rule docks a proximal phalanx to a tip), and every limb with the
+// hole it leaves capped; a limb copied onto the freed site closes it
+// again. Each result is one closed surface.
+TEST_P(Segmented_meshes, every_segment_and_limb_can_be_removed_and_a_limb_copied)
+{
+  const std::string name = GetParam();
+  MPM_REQUIRE_PSB(name);
+  Learned l = learn(name);
+  add_repetition_rules(l.model);
+  EXPECT_FALSE(add_bridging_rules(l.model).empty()) << name;
+  EXPECT_TRUE(add_bridging_rules(l.model).empty()) << name;
+  const Part_graph example = part_graph_of_example(l.model, 0);
+  const int root = root_node(example);
+  std::vector<int> dockings(example.nodes.size(), 0);
+  std::vector<int> limbs;
+  for(const Part_edge& e : example.edges)
+  {
+    ++dockings[std::size_t(e.first)], ++dockings[std::size_t(e.second)];
+    if(e.first == root || e.second == root) limbs.push_back(e.first == root ? e.second : e.first);
+  }
+  const auto expect_closed = [&](Assembly a, const std::string& what, int holes) {
+    EXPECT_EQ(cap_free_sites(l.model, a), holes) << name << ": " << what;
+    const Surface_soundness s = check_surface(a.mesh);
+    EXPECT_EQ(s.components, 1) << name << ": " << what;
+    EXPECT_EQ(s.border_edges, 0) << name << ": " << what;
+    EXPECT_EQ(s.non_manifold_edges, 0) << name << ": " << what;
+    EXPECT_TRUE(a.mesh.points.allFinite()) << name << ": " << what;
+  };
+  int segments = 0;
+  for(int node = 0; node < int(example.nodes.size()); ++node)
+  {
+    if(node == root || dockings[std::size_t(node)] != 2) continue;
+    Part_graph g = example;
+    ASSERT_NO_THROW(remove_segment(l.model, g, node)) << name << ": segment " << node;
+    expect_closed(assemble(l.model, g), "segment " + std::to_string(node) + " removed", 0);
+    ++segments;
+  }
+  EXPECT_GE(segments, 5) << name;
+  for(int limb : limbs)
+  {
+    Part_graph g = example;
+    remove_branch(l.model, g, limb, root);
+    expect_closed(assemble(l.model, g), "limb " + std::to_string(limb) + " removed", 1);
+  }
+  // A limb replaced by a copy of another of its type (the freed site docks
+  // that type: each site of a real body has its own rule).
+  int gone = -1, copied = -1;
+  for(int a : limbs)
+    for(int b : limbs)
+      if(gone < 0 && a != b && example.nodes[std::size_t(a)].type == example.nodes[std::size_t(b)].type) gone = a, copied = b;
+  ASSERT_GE(gone, 0) << name << ": no two limbs of one type";
+  Part_graph g = example;
+  const std::vector<int> renumbered = remove_branch(l.model, g, gone, root);
+  const int body = renumbered[std::size_t(root)];
+  ASSERT_NO_THROW(duplicate_branch(l.model, g, renumbered[std::size_t(copied)], body, body)) << name;
+  expect_closed(assemble(l.model, g), "a limb copied onto the freed site", 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Psb, Segmented_meshes, ::testing::Values("hand_181", "octopus_137", "ant_81"));

@@ -349,5 +349,47 @@ std::vector<int> add_repetition_rules(Morphable_part_model& model)
   return added;
 }
 
+std::vector<int> add_bridging_rules(Morphable_part_model& model)
+{
+  // The two sites each segment of a training example hangs between: what
+  // its neighbours dock at once it is removed.
+  std::set<std::pair<Site_ref, Site_ref>> bridges;
+  for(const Training_example& example : model.examples)
+  {
+    std::vector<std::vector<Site_ref>> neighbour_sites(example.graph.nodes.size());
+    std::vector<int> dockings(example.graph.nodes.size(), 0);
+    for(const Part_edge& e : example.graph.edges)
+    {
+      const Docking_rule& r = model.rules[std::size_t(e.rule)];
+      ++dockings[std::size_t(e.first)];
+      ++dockings[std::size_t(e.second)];
+      if(r.kind != Docking_kind::boundary) continue;
+      neighbour_sites[std::size_t(e.first)].push_back(r.second);
+      neighbour_sites[std::size_t(e.second)].push_back(r.first);
+    }
+    for(std::size_t n = 0; n < neighbour_sites.size(); ++n)
+    {
+      const std::vector<Site_ref>& sites = neighbour_sites[n];
+      if(dockings[n] == 2 && sites.size() == 2 && !(sites[0] == sites[1]))
+        bridges.insert({std::min(sites[0], sites[1]), std::max(sites[0], sites[1])});
+    }
+  }
+  std::vector<int> added;
+  for(const auto& [a, b] : bridges)
+  {
+    if(model.grammar().allows(a, b)) continue;
+    Docking_rule rule;
+    try {
+      rule = derive_docking_rule(model, a, b);
+    } catch(const Input_error&) {
+      continue; // not two simple loops: no bridge
+    }
+    added.push_back(static_cast<int>(model.rules.size()));
+    model.rules.push_back(std::move(rule));
+    model.update_grammar();
+  }
+  return added;
+}
+
 } // namespace MPM
 } // namespace CGAL

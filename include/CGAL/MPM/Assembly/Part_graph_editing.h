@@ -61,6 +61,17 @@ int add_derived_rule(Morphable_part_model& model, const Site_ref& a, const Site_
 /// learned rules keep their indices. Returns the indices of the added rules
 /// (none on a second call).
 std::vector<int> add_repetition_rules(Morphable_part_model& model);
+
+/// Appends a *bridging rule* for every segment of a training example (a
+/// node docked to exactly two others, both by boundary dockings) whose two
+/// neighbours' sites no rule docks to each other:
+/// `derive_docking_rule(model, a, b)` of those sites, so that
+/// `remove_segment()` can dock the neighbours of a removed segment (a
+/// finger's proximal phalanx to its tip, a palm to a middle phalanx).
+/// Pairs whose sites are not simple loops are skipped. The learned rules
+/// keep their indices. Returns the indices of the added rules (none on a
+/// second call).
+std::vector<int> add_bridging_rules(Morphable_part_model& model);
 /// @}
 
 /// \ingroup PkgMPMRef
