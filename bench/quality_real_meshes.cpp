@@ -10,6 +10,7 @@
 // their length. Prints a Markdown table.
 #include <CGAL/MPM/IO/Annotation_io.h>
 #include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Assembly/Free_site_capping.h>
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Editing/Editing.h>
@@ -193,6 +194,49 @@ Insertions insert_into_every_chain(Morphable_part_model model)
   return r;
 }
 
+// Every segment removed (a node docked twice, its neighbours bridged) and
+// every limb removed with its hole capped, one at a time: how many gave
+// one closed surface.
+struct Removals
+{
+  int segments = 0, segments_closed = 0, limbs = 0, limbs_closed = 0;
+  std::string failure;
+};
+
+Removals remove_every_segment_and_limb(Morphable_part_model model)
+{
+  Removals r;
+  add_bridging_rules(model);
+  const Part_graph example = part_graph_of_example(model, 0);
+  const Part_adjacency_graph g = adjacency_graph(example);
+  const int root = root_node(example);
+  for(int node = 0; node < int(example.nodes.size()); ++node)
+  {
+    if(node == root) continue;
+    const bool segment = boost::out_degree(node, g) == 2, limb = boost::edge(node, root, g).second;
+    for(const bool whole_limb : {false, true})
+    {
+      if(!(whole_limb ? limb : segment)) continue;
+      ++(whole_limb ? r.limbs : r.segments);
+      try
+      {
+        Part_graph graph = example;
+        if(whole_limb) remove_branch(model, graph, node, root);
+        else remove_segment(model, graph, node);
+        Assembly a = assemble(model, graph);
+        cap_free_sites(model, a);
+        const Surface_soundness s = check_surface(a.mesh);
+        if(s.components == 1 && s.border_edges == 0 && s.non_manifold_edges == 0) ++(whole_limb ? r.limbs_closed : r.segments_closed);
+      }
+      catch(const std::exception& error)
+      {
+        r.failure += std::string(r.failure.empty() ? "" : "; ") + error.what();
+      }
+    }
+  }
+  return r;
+}
+
 std::string edit_cells(const Edit_result& r)
 {
   std::ostringstream s;
@@ -215,9 +259,9 @@ int main(int argc, char** argv)
     "and prints the soundness of the learned example and of symmetrize, caricature and a tip drag.\n");
   const std::vector<std::string> names = options.meshes();
   std::cout << "| mesh | types (corresponded) | learn s | example pieces | open edges | folded faces | new self-int. | Hausdorff % | "
-               "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | inverted in part, solver's result | new inverted in part, written (rest folds unfolded) | new folds, written | new self-int. | "
+               "insertions closed / tried (largest energy per part) | faces of inserted segments crossing other parts | segments removed, closed / tried; limbs removed and capped, closed / tried | edit | converged, iterations | moves in 10 more iterations, % diagonal | open edges | turned > 90 deg | inverted in part, solver's result | new inverted in part, written (rest folds unfolded) | new folds, written | new self-int. | "
                "worst length change (parts out of range) | worst change of length along the surface (parts out of range) |\n"
-               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+               "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for(const std::string& name : names)
   {
     try
@@ -251,6 +295,10 @@ int main(int argc, char** argv)
            << inserted.closed << " / " << inserted.tried << " (" << std::setprecision(2)
            << inserted.worst_energy_per_part << ") | " << inserted.crossings << " | ";
       if(!inserted.failure.empty()) std::cerr << name << ": an insertion failed: " << inserted.failure << "\n";
+      const Removals removed = remove_every_segment_and_limb(model);
+      head << removed.segments_closed << " / " << removed.segments << "; " << removed.limbs_closed << " / "
+           << removed.limbs << " | ";
+      if(!removed.failure.empty()) std::cerr << name << ": a removal failed: " << removed.failure << "\n";
       struct Edit
       {
         const char* name;
@@ -271,7 +319,7 @@ int main(int argc, char** argv)
           solver.set_handles(handles.vertices, handles.targets);
           held = handles.vertices;
         }
-        std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | | | ") << e.name << " | "
+        std::cout << (e.name == edits.front().name ? head.str() : "| | | | | | | | | | | | ") << e.name << " | "
                   << edit_cells(evaluate(model, e.problem, solver, rest, rest_faults, held)) << " |\n"
                   << std::flush;
       }
