@@ -152,6 +152,12 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
 // largest residual energy per part among them, how many faces of an
 // inserted segment cross another part (one lying on top of an existing
 // segment crosses it everywhere), and why any failed.
+bool one_closed_surface(const Indexed_mesh& mesh)
+{
+  const Surface_soundness s = check_surface(mesh);
+  return s.components == 1 && s.border_edges == 0 && s.non_manifold_edges == 0;
+}
+
 struct Insertions
 {
   int tried = 0, closed = 0;
@@ -181,8 +187,7 @@ Insertions insert_into_every_chain(Morphable_part_model model)
       const int inserted = insert_segment(model, graph, int(k));
       choose_segment_shape(model, graph, inserted);
       const Assembly a = assemble(model, graph);
-      const Surface_soundness s = check_surface(a.mesh);
-      if(s.components == 1 && s.border_edges == 0 && s.non_manifold_edges == 0) ++r.closed;
+      if(one_closed_surface(a.mesh)) ++r.closed;
       r.crossings += crossings_of_node(a, inserted);
       r.worst_energy_per_part = std::max(r.worst_energy_per_part, a.energy_per_part());
     }
@@ -225,8 +230,7 @@ Removals remove_every_segment_and_limb(Morphable_part_model model)
         else remove_segment(model, graph, node);
         Assembly a = assemble(model, graph);
         cap_free_sites(model, a);
-        const Surface_soundness s = check_surface(a.mesh);
-        if(s.components == 1 && s.border_edges == 0 && s.non_manifold_edges == 0) ++(whole_limb ? r.limbs_closed : r.segments_closed);
+        if(one_closed_surface(a.mesh)) ++(whole_limb ? r.limbs_closed : r.segments_closed);
       }
       catch(const std::exception& error)
       {
