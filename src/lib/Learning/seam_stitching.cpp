@@ -471,8 +471,10 @@ private:
   {
     std::map<int, std::vector<Part_side>>& sides = sides_[label];
     if(on_loops_.empty()) on_loops_ = points_on_loops();
-    // Own vertices of every loop first: a point near another of the part's
-    // loops must not be inserted there as well.
+    // Own vertices of every loop first: a point of one of the part's loops
+    // is inserted into another only where that one lies on another
+    // original loop (the junction where the original border touched
+    // itself).
     for(std::size_t b = 0; b < border.loops.size(); ++b)
       for(std::size_t k = 0; k < border.loops[b].size(); ++k)
       {
