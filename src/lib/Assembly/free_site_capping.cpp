@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
+#include <algorithm>
 #include <iterator>
 #include <vector>
 
@@ -28,6 +29,7 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
       if(type.sites[std::size_t(s)].kind == Docking_kind::boundary)
         for(int local : type.sites[std::size_t(s)].vertices) free_site_node[std::size_t(a.vertex(node, local))] = node;
   }
+  if(std::all_of(free_site_node.begin(), free_site_node.end(), [](int node) { return node < 0; })) return 0;
   Indexed_surface_mesh surface = internal::to_surface_mesh(a.mesh, "assembly", "capping free sites");
   std::vector<Indexed_surface_mesh::Halfedge_index> borders;
   PMP::extract_boundary_cycles(surface, std::back_inserter(borders));

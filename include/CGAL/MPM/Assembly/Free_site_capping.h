@@ -20,6 +20,8 @@ namespace MPM {
 /// they close, in `a.face_nodes` and `a.face_types`); other holes (an
 /// open training mesh) are left as they are. Cap after the last edit:
 /// `a.problem` keeps the uncapped mesh. Returns the number of holes filled.
+/// Throws `Input_error` when there is a free site to cap but the assembly
+/// is not a manifold surface (a halfedge structure cannot hold it).
 int cap_free_sites(const Morphable_part_model& model, Assembly& a);
 
 } // namespace MPM
