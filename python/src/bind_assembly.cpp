@@ -7,6 +7,7 @@
 #include "model_data.h"
 
 #include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Assembly/Free_site_capping.h>
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 
@@ -150,14 +151,18 @@ void bind_assembly(py::module_& m)
   bind_part_graph(m);
 
   m.def("assemble", [](const Morphable_part_model& model, const Part_graph& graph, bool solve, int max_iterations,
-                       const py::object& callback) {
+                       const py::object& callback, bool cap) {
     Python_callbacks callbacks;
     Assembly_options options = assembly_options(solve, max_iterations);
     options.solver.iteration_callback = callbacks.wrap<int, double>(callback);
     options.solver.cancel = callbacks.flag();
-    return assembly_dict(callbacks.run([&] { return assemble(model, graph, options); })); },
+    return assembly_dict(callbacks.run([&] {
+      Assembly a = assemble(model, graph, options);
+      if(cap) cap_free_sites(model, a);
+      return a;
+    })); },
         py::arg("model"), py::arg("graph"), py::arg("solve") = true, py::arg("max_iterations") = 100,
-        py::arg("callback") = py::none(),
+        py::arg("callback") = py::none(), py::arg("cap_free_sites") = false,
         R"doc(Assembles a part graph and embeds it seamlessly.
 
 Returns {"V", "F", "initial_V" (the rigid placement), "face_nodes",
@@ -165,7 +170,9 @@ Returns {"V", "F", "initial_V" (the rigid placement), "face_nodes",
 "docking_energies", "iterations", "converged", "energies", "setup_ms",
 "solve_ms"}. solve=False stops after the rigid placement. callback(iteration,
 energy) is called after each iteration of the solver; raising in it stops
-the assembly and re-raises. Releases the GIL.)doc");
+the assembly and re-raises. cap_free_sites=True fills the hole a removed
+branch leaves at a free site (cap_free_sites() in C++): "V", "F",
+"face_nodes" and "face_types" then include the cap. Releases the GIL.)doc");
 
   m.def("spawn", [](const Morphable_part_model& model, const Part_graph& start, int count, unsigned seed,
                     const py::object& progress) {

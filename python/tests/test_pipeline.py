@@ -83,6 +83,21 @@ def test_bridging_rules_let_a_finger_lose_a_segment(hand_model):
     assert check["components"] == 1 and check["border_edges"] == 0
 
 
+def test_a_removed_finger_leaves_a_capped_palm(hand_model):
+    model = mpm.Model.from_bytes(hand_model.to_bytes())
+    graph = mpm.part_graph(model)
+    root = mpm.root_node(graph)
+    finger = next(e["second"] if e["first"] == root else e["first"] for e in graph.edges
+                  if root in (e["first"], e["second"]))
+    mpm.remove_branch(model, graph, finger, root)
+    open_result = mpm.assemble(model, graph)
+    assert mpm.check_surface(open_result["V"], open_result["F"])["border_edges"] > 0
+    capped = mpm.assemble(model, graph, cap_free_sites=True)
+    check = mpm.check_surface(capped["V"], capped["F"])
+    assert check["components"] == 1 and check["border_edges"] == 0
+    assert len(capped["F"]) > len(open_result["F"]) and len(capped["face_nodes"]) == len(capped["F"])
+
+
 def test_cut_then_propose_then_learn(hand):
     # Cut the synthetic hand's finger tips off along their seams: a cut
     # through the vertices a tip shares with its middle segment.
