@@ -102,8 +102,9 @@ close_cycle(); embed it with assemble().)doc")
         "Adds to the model the repetition rule of every two-site part type (a finger segment docked to "
         "another of its type), so chains can grow. Returns the new rules' indices.");
   m.def("add_bridging_rules", &add_bridging_rules, py::arg("model"),
-        "Adds to the model a rule docking the two neighbours of every two-site part type to each other (a "
-        "proximal phalanx to a fingertip), so segments can be removed. Returns the new rules' indices.");
+        "Adds to the model, for every segment of a training example (a part docked to exactly two others), a "
+        "rule docking its two neighbours to each other (a proximal phalanx to a fingertip), so segments can be "
+        "removed. Returns the new rules' indices.");
   m.def("root_node", &root_node, py::arg("graph"), "The node with the most dockings (the palm, the body).");
   m.def("insert_segment", [](const Morphable_part_model& model, Part_graph& graph, int edge, int type, bool choose_shape) {
     if(edge < 0 || edge >= int(graph.edges.size()))

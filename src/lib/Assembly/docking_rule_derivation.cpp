@@ -374,10 +374,13 @@ std::vector<int> add_bridging_rules(Morphable_part_model& model)
         bridges.insert({std::min(sites[0], sites[1]), std::max(sites[0], sites[1])});
     }
   }
+  // The pairs are distinct, so one added rule never allows a later pair:
+  // the grammar is rebuilt once, as for repetition rules.
   std::vector<int> added;
+  const Shape_grammar& grammar = model.grammar();
   for(const auto& [a, b] : bridges)
   {
-    if(model.grammar().allows(a, b)) continue;
+    if(grammar.allows(a, b)) continue;
     Docking_rule rule;
     try {
       rule = derive_docking_rule(model, a, b);
@@ -386,8 +389,8 @@ std::vector<int> add_bridging_rules(Morphable_part_model& model)
     }
     added.push_back(static_cast<int>(model.rules.size()));
     model.rules.push_back(std::move(rule));
-    model.update_grammar();
   }
+  if(!added.empty()) model.update_grammar();
   return added;
 }
 

@@ -3,6 +3,7 @@
 #include <CGAL/MPM/Assembly/Free_site_capping.h>
 
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
+#include <CGAL/MPM/IO/Face_graph_conversion.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -56,22 +57,8 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
     }
     ++capped;
   }
-  if(capped == 0) return 0;
   // Vertices and faces were only added, so the first keep their indices.
-  a.mesh.points.conservativeResize(Eigen::Index(surface.number_of_vertices()), 3);
-  for(const auto v : surface.vertices())
-  {
-    const auto& p = surface.point(v);
-    a.mesh.points.row(Eigen::Index(v)) << p.x(), p.y(), p.z();
-  }
-  a.mesh.triangles.clear();
-  for(const auto f : surface.faces())
-  {
-    Triangle t;
-    int k = 0;
-    for(const auto v : CGAL::vertices_around_face(surface.halfedge(f), surface)) t[std::size_t(k++)] = int(v);
-    a.mesh.triangles.push_back(t);
-  }
+  if(capped > 0) a.mesh = to_indexed_mesh(surface);
   return capped;
 }
 
