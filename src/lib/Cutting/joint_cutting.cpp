@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <utility>
 
 namespace CGAL {
 namespace MPM {
@@ -45,6 +47,18 @@ void check_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices, 
                         "is out of range (the mesh has " + std::to_string(mesh.number_of_vertices()) + " vertices)");
     if(!in_face[std::size_t(v)]) throw Input_error(source, vertex_name(v), "belongs to no face");
   }
+}
+
+bool on_cut(const std::vector<int>& path, int v) { return std::find(path.begin(), path.end(), v) != path.end(); }
+
+// Both closed paths (first vertex repeated last) step along one edge.
+bool share_an_edge(const std::vector<int>& a, const std::vector<int>& b)
+{
+  std::set<std::pair<int, int>> edges;
+  for(std::size_t k = 0; k + 1 < a.size(); ++k) edges.insert(std::minmax(a[k], a[k + 1]));
+  for(std::size_t k = 0; k + 1 < b.size(); ++k)
+    if(edges.count(std::minmax(b[k], b[k + 1]))) return true;
+  return false;
 }
 
 } // namespace
@@ -85,21 +99,68 @@ Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vect
   cutting.feature_weight = options.feature_weight;
   Cut_specification spec;
   spec.source = "clicked vertices";
+  std::vector<std::vector<int>> paths;
+  // Through the click when its section passes there, so that cuts which
+  // meet at a click are seen to meet.
+  const auto line_of = [&](int v, const Section& s) {
+    std::vector<int> loop = s.loop;
+    std::rotate(loop.begin(), std::find(loop.begin(), loop.end(), v) == loop.end() ? loop.begin() : std::find(loop.begin(), loop.end(), v), loop.end());
+    return Cut_line{anchors(mesh, loop, options.anchors), true, "at vertex " + std::to_string(v)};
+  };
+  // The line traced alone, so that a section whose points cannot be joined
+  // in order is blamed on its click (and skipped) rather than failing all.
+  const auto traced = [&](int v, const Cut_line& line) {
+    try {
+      return cut_mesh(mesh, Cut_specification{{line}, {}, spec.source}, cutting, mesh_source).paths.front();
+    } catch(const Input_error& e) {
+      finder.fail(v, "the section across the limb there cannot be traced as a cut: " + e.problem());
+    }
+    return std::vector<int>();
+  };
+  // The first cut already made that `line` runs along or crosses: two
+  // closed cuts of a sphere that do neither share no edge and make three
+  // regions. Cuts may touch at a vertex: people cut an arm's base ring
+  // pinched to a point.
+  const auto conflicting = [&](const std::vector<int>& path, const Cut_line& line) {
+    for(std::size_t i = 0; i < paths.size(); ++i) {
+      if(std::none_of(path.begin(), path.end(), [&](int u) { return on_cut(paths[i], u); })) continue;
+      if(share_an_edge(paths[i], path)) return i;
+      try {
+        if(cut_mesh(mesh, Cut_specification{{spec.cuts[i], line}, {}, spec.source}, cutting, mesh_source).regions == 3)
+          continue;
+      } catch(const Input_error&) {
+      }
+      return i;
+    }
+    return paths.size();
+  };
+  const auto same_joint = [&](int v, std::size_t made) {
+    finder.fail(v, "is on the same joint as " + vertex_name(found[made]) +
+                     " (its cut would run along or cross the cut made there): click each joint once");
+  };
   for(int v : vertices) {
     try {
-      const Section s = finder.snapped(v, finder.find(v), options.snap_band);
-      for(std::size_t i = 0; i < found.size(); ++i) finder.check_distinct(found[i], sections[i], v, s);
-      const Cut_line line{anchors(mesh, s.loop, options.anchors), true, "at vertex " + std::to_string(v)};
-      // Traced alone first, so that a section whose points cannot be joined
-      // in order is blamed on its click (and skipped) rather than failing all.
-      try {
-        cut_mesh(mesh, Cut_specification{{line}, {}, spec.source}, cutting, mesh_source);
-      } catch(const Input_error& e) {
-        finder.fail(v, "the section across the limb there cannot be traced as a cut: " + e.problem());
+      const std::size_t again = std::size_t(std::find(found.begin(), found.end(), v) - found.begin());
+      if(again < found.size()) same_joint(v, again);
+      const Section through = finder.find(v);
+      Section s = finder.snapped(v, through, options.snap_band);
+      Cut_line line = line_of(v, s);
+      std::vector<int> path = traced(v, line);
+      // Two cuts a ring of faces apart bound a thin ring, as people cut
+      // where an arm leaves the body; clicked there, both snap to the one
+      // crease, so the second keeps the section through its click. If that
+      // too coincides with or crosses a cut made, the click was on its joint.
+      if(conflicting(path, line) < found.size()) {
+        s = through;
+        line = line_of(v, s);
+        path = traced(v, line);
+        const std::size_t met = conflicting(path, line);
+        if(met < found.size()) same_joint(v, met);
       }
       found.push_back(v);
       sections.push_back(s);
-      spec.cuts.push_back(line);
+      paths.push_back(std::move(path));
+      spec.cuts.push_back(std::move(line));
     } catch(const Input_error& e) {
       if(!options.skip_unfound) throw;
       result.skipped.push_back({v, e.what()});

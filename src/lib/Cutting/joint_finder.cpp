@@ -151,6 +151,10 @@ Section Joint_finder::snapped(int v, const Section& s, double band) const
   for(std::size_t node = previous[target]; node != source; node = previous[node]) r.loop.push_back(int(node / 2));
   r.loop.push_back(v);
   std::reverse(r.loop.begin(), r.loop.end());
+  // Where the axis passes close to the surface (a click at a knuckle, on
+  // the palm's side), a loop around a few faces there also goes once
+  // around it: too few vertices to be a section of the limb.
+  if(std::set<int>(r.loop.begin(), r.loop.end()).size() < std::size_t(options_.minimum_section_vertices)) return s;
   r.centre = Vector::Zero();
   for(int u : r.loop) r.centre += point(u);
   r.centre /= double(r.loop.size());
@@ -170,16 +174,6 @@ std::vector<Joint_finder::Vector> Joint_finder::tilted(const Vector& direction, 
       r.push_back((direction + std::tan(angle * M_PI / 180.) * e).normalized());
     }
   return r;
-}
-
-// Two clicks on one joint give sections whose centres lie within a limb
-// radius (sections of neighbouring limbs may share a vertex where they meet).
-void Joint_finder::check_distinct(int u, const Section& a, int v, const Section& b) const
-{
-  const double apart = (a.centre - b.centre).norm();
-  if(apart < std::max(a.axis.radius, b.axis.radius))
-    fail(v, "is on the same joint as " + vertex_name(u) + " (the centres of their cuts lie " + std::to_string(apart) +
-              " apart, less than the limb's radius): click each joint once");
 }
 
 void Joint_finder::fail(int v, const std::string& problem) const

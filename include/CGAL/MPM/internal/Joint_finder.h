@@ -63,9 +63,6 @@ public:
   // the limb or curved. `s` itself when no loop there is cheaper.
   Section snapped(int v, const Section& s, double band) const;
 
-  // Throws Input_error naming `v` when `a` (clicked at `u`) and `b` lie on one joint.
-  void check_distinct(int u, const Section& a, int v, const Section& b) const;
-
   // The closed section by the plane through `v` moved by `t` along the axis,
   // with the given normal: the loop through `v` when `through_click` and there
   // is one, else the loop centred nearest the axis.
