@@ -90,15 +90,21 @@ struct Joint_cutting_result
 /// the crease as the loop through the vertex around the limb of least
 /// crease-weighted length near that plane (`Joint_cutting_options::snap_band`),
 /// traced as the feature-weighted geodesic loop of `cut_mesh()` through
-/// `Joint_cutting_options::anchors` of its vertices.
+/// `Joint_cutting_options::anchors` of its vertices, the clicked vertex
+/// first. A snapped loop of fewer than `minimum_section_vertices` vertices
+/// is not taken. When a click's snapped cut runs along or crosses a cut
+/// already made (both clicks snapped to one crease), the section through
+/// the click is taken instead: two cuts a ring of faces apart bound a thin
+/// ring, as people cut where an arm leaves the body.
 ///
 /// Throws `Input_error` naming the vertex for: a vertex out of range or in
 /// no face; a vertex on the body (no limb axis passes under it); a section
 /// that is not a small closed loop around the axis, nor any within the search
 /// range; a section with fewer than `minimum_section_vertices` vertices (a
 /// mesh too coarse there); a section whose points cannot be joined in order
-/// by `cut_mesh()`; two vertices on one joint (the centres of their sections
-/// lie within a limb radius). Also for a mesh with holes or several
+/// by `cut_mesh()`; two vertices on one joint (the same vertex twice, or a
+/// click whose cut, snapped or through the click, would share an edge with
+/// or cross a cut already made). Also for a mesh with holes or several
 /// components, and as `cut_mesh()` when the cuts together do not separate the
 /// mesh. The result is the same on every run (the skeletonization's own
 /// mesh is allocated in a fixed order, see doc/MPM/Cutting.md).
