@@ -11,6 +11,7 @@
 #include <CGAL/MPM/IO/Model_io.h>
 #include <CGAL/MPM/Model/Part_adjacency_graph.h>
 #include <CGAL/MPM/Part_colors.h>
+#include <CGAL/MPM/Assembly/Free_site_capping.h>
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
@@ -250,6 +251,8 @@ void Session::rebuild()
     MPM::Assembly_options options;
     options.solver.coupling_weight = coupling_;
     MPM::Assembly assembly = MPM::assemble(model_, graph, options);
+    // A removed branch's hole is closed, and the cap is edited with its part.
+    MPM::cap_free_sites(model_, assembly);
     problem = assembly.problem;
     problem.mesh.points = assembly.mesh.points; // start from the embedding
     assembly_ = std::move(assembly);

@@ -6,6 +6,8 @@
 // This test includes CGAL's self-intersection test (heavier than the other
 // test sources): it is the independent check the issue asks for.
 #include <CGAL/MPM/Assembly/Assembly.h>
+#include <CGAL/MPM/Assembly/Free_site_capping.h>
+#include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
@@ -249,6 +251,53 @@ TEST(Assembly, spider_with_legs_removed_added_and_lengthened)
   // only guards against a broken embedding.
   const double factor = check_edited(m, g, "spider, seven legs, one with two femurs");
   EXPECT_LT(factor, 5. * energy_factor_bound);
+}
+
+// The cap over a removed leg's hole is part of the capped assembly's
+// problem: solved again, it keeps its shape and follows the body dragged
+// beside it instead of staying behind (it was not in the problem before).
+TEST(Assembly, a_capped_hole_deforms_with_its_part)
+{
+  const Morphable_part_model& m = model_of(Synthetic_family::spider);
+  Part_graph g = part_graph_of_example(m);
+  remove_branch(m, g, node_of_type(m, g, "coxa", 0), root_node(g));
+  Assembly a = assemble(m, g);
+  const std::size_t clusters = a.problem.clusters.size();
+  ASSERT_EQ(cap_free_sites(m, a), 1);
+  ASSERT_EQ(a.problem.mesh.points.rows(), a.mesh.points.rows());
+  EXPECT_EQ(a.problem.mesh.triangles, a.mesh.triangles);
+  ASSERT_EQ(a.problem.clusters.size(), clusters + 1);
+  const Cluster& cap = a.problem.clusters.back();
+  EXPECT_EQ(border_edges(a.mesh.triangles), 0);
+
+  // Drag the ring the cap closes by 5% of the diagonal, the far side of the body held.
+  const int ring = cap.vertices.front();
+  int far = ring;
+  for(int v = 0; v < a.mesh.number_of_vertices(); ++v)
+    if((a.mesh.points.row(v) - a.mesh.points.row(ring)).norm() > (a.mesh.points.row(far) - a.mesh.points.row(ring)).norm())
+      far = v;
+  const double d = diagonal(a.mesh.points);
+  Embedding_problem problem = a.problem;
+  problem.mesh.points = a.mesh.points;
+  Embedding_solver solver(problem);
+  Point_matrix targets(2, 3);
+  targets.row(0) = a.mesh.points.row(ring) + Eigen::RowVector3d(0.05 * d, 0., 0.);
+  targets.row(1) = a.mesh.points.row(far);
+  solver.set_handles({ring, far}, targets);
+  ASSERT_TRUE(solver.solve().converged);
+  const Point_matrix& p = solver.positions();
+  ASSERT_TRUE(p.allFinite());
+  Point_matrix moved(cap.mean.rows(), 3);
+  double cap_motion = 0.;
+  for(Eigen::Index i = 0; i < moved.rows(); ++i)
+  {
+    moved.row(i) = p.row(cap.vertices[std::size_t(i)]);
+    cap_motion = std::max(cap_motion, (moved.row(i) - cap.mean.row(i)).norm());
+  }
+  const Point_matrix fitted = fit_rigid_motion(cap.mean, moved).apply(cap.mean);
+  const double size = diagonal(cap.mean);
+  EXPECT_GT(cap_motion, 0.02 * d); // it went with the body
+  EXPECT_LT((fitted - moved).rowwise().norm().maxCoeff(), 0.05 * size); // and kept its shape
 }
 
 TEST(Assembly, hexa_grid_closed_ring_of_tiles)

@@ -4,6 +4,7 @@
 
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/IO/Face_graph_conversion.h>
+#include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -11,6 +12,8 @@
 
 #include <algorithm>
 #include <iterator>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -18,6 +21,38 @@ namespace MPM {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 using internal::Indexed_surface_mesh;
+
+namespace {
+
+// The cap as it was made (its faces over the capped mesh, with the loop it
+// closes) is the cluster's target: it keeps its shape, turned with its loop,
+// as a part with one instance does.
+Cluster cap_cluster(const Indexed_mesh& mesh, const std::vector<std::size_t>& faces, const std::string& name)
+{
+  Cluster c;
+  c.name = name;
+  std::map<int, int> local;
+  for(std::size_t f : faces)
+  {
+    Triangle t;
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const int v = mesh.triangles[f][k];
+      const auto inserted = local.insert({v, int(c.vertices.size())});
+      if(inserted.second) c.vertices.push_back(v);
+      t[k] = inserted.first->second;
+    }
+    c.triangles.push_back(t);
+  }
+  c.edges = internal::mesh_edges(c.triangles);
+  c.mean.resize(Eigen::Index(c.vertices.size()), 3);
+  for(std::size_t i = 0; i < c.vertices.size(); ++i) c.mean.row(Eigen::Index(i)) = mesh.points.row(c.vertices[i]);
+  c.modes = Eigen::MatrixXd::Zero(c.mean.rows() * 3, 0);
+  c.sigmas = Eigen::VectorXd::Zero(0);
+  return c;
+}
+
+} // namespace
 
 int cap_free_sites(const Morphable_part_model& model, Assembly& a)
 {
@@ -34,7 +69,8 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
   Indexed_surface_mesh surface = internal::to_surface_mesh(a.mesh, "assembly", "capping free sites");
   std::vector<Indexed_surface_mesh::Halfedge_index> borders;
   PMP::extract_boundary_cycles(surface, std::back_inserter(borders));
-  int capped = 0;
+  std::vector<std::vector<std::size_t>> cap_faces;
+  std::vector<int> cap_nodes;
   for(const auto h : borders)
   {
     int node = -1;
@@ -50,16 +86,27 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
     const int type = a.graph.nodes[std::size_t(node)].type;
     a.face_nodes.resize(surface.number_of_faces(), -1);
     a.face_types.resize(surface.number_of_faces(), -1);
+    cap_faces.emplace_back();
+    cap_nodes.push_back(node);
     for(const auto f : faces)
     {
       a.face_nodes[std::size_t(f)] = node;
       a.face_types[std::size_t(f)] = type;
+      cap_faces.back().push_back(std::size_t(f));
     }
-    ++capped;
   }
+  if(cap_faces.empty()) return 0;
   // Vertices and faces were only added, so the first keep their indices.
-  if(capped > 0) a.mesh = to_indexed_mesh(surface);
-  return capped;
+  a.mesh = to_indexed_mesh(surface);
+  const Eigen::Index solved = a.problem.mesh.points.rows();
+  a.problem.mesh.triangles = a.mesh.triangles;
+  a.problem.mesh.points.conservativeResize(a.mesh.points.rows(), 3);
+  a.problem.mesh.points.bottomRows(a.mesh.points.rows() - solved) = a.mesh.points.bottomRows(a.mesh.points.rows() - solved);
+  for(std::size_t c = 0; c < cap_faces.size(); ++c)
+    a.problem.clusters.push_back(cap_cluster(a.mesh, cap_faces[c],
+                                             "cap of part " + std::to_string(cap_nodes[c]) + " (" +
+                                               model.types[std::size_t(a.graph.nodes[std::size_t(cap_nodes[c])].type)].name + ")"));
+  return int(cap_faces.size());
 }
 
 } // namespace MPM

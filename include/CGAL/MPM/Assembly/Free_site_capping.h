@@ -18,8 +18,11 @@ namespace MPM {
 /// the cap continues the part's surface smoothly. The cap's vertices and
 /// faces are appended to `a.mesh` (its faces belong to the node whose site
 /// they close, in `a.face_nodes` and `a.face_types`); other holes (an
-/// open training mesh) are left as they are. Cap after the last edit:
-/// `a.problem` keeps the uncapped mesh. Returns the number of holes filled.
+/// open training mesh) are left as they are. `a.problem` gets the cap's
+/// vertices and faces too, and one cluster per cap after the nodes' and
+/// edges' (no modes, its target the cap as made), so that the capped
+/// assembly solved again (dragged, in the demo) keeps each cap's shape,
+/// turned with its part. Returns the number of holes filled.
 /// Throws `Input_error` when there is a free site to cap but the assembly
 /// is not a manifold surface (a halfedge structure cannot hold it).
 int cap_free_sites(const Morphable_part_model& model, Assembly& a);
