@@ -22,25 +22,6 @@ namespace {
 
 using namespace CGAL::MPM;
 
-// The human cuts a user would click: the closed seam loops, and, where a
-// part's seam runs along several neighbours (a phalanx touching the next
-// finger), the longest open stretch of at least one of its two parts; the
-// short stretches between touching neighbours are no joints.
-std::vector<Segmentation_cut> joint_cuts(const std::vector<Segmentation_cut>& cuts)
-{
-  std::map<int, std::size_t> longest_open;
-  for(const Segmentation_cut& c : cuts)
-    if(c.edges < int(c.vertices.size()))
-      for(int label : {c.first_label, c.second_label})
-        longest_open[label] = std::max(longest_open[label], c.vertices.size());
-  std::vector<Segmentation_cut> joints;
-  for(const Segmentation_cut& c : cuts)
-    if(c.edges == int(c.vertices.size()) || longest_open[c.first_label] == c.vertices.size() ||
-       longest_open[c.second_label] == c.vertices.size())
-      joints.push_back(c);
-  return joints;
-}
-
 void evaluate(const std::string& name, const std::string& base, double search_range, double snap_band, bool details)
 {
   const Labeled_mesh human = read_labeled_mesh(base + ".off", base + ".seg");

@@ -208,8 +208,9 @@ std::string psb_directory()
   return dir && *dir ? dir : MPM_PSB_DIR;
 }
 
-// The closed human cuts of a PSB mesh and one click on each (the vertex
-// nearest the cut's centroid); skips the test when the data is absent.
+// The human cuts of a PSB mesh a user would click (`joint_cuts()`, as
+// bench/quality_segmentation clicks them) and one click on each (the vertex
+// nearest the cut's centroid).
 struct Human_cuts
 {
   Labeled_mesh human;
@@ -234,11 +235,10 @@ bool read_human_cuts(const std::string& name, Human_cuts& h)
   const std::string base = psb_directory() + "/" + name;
   if(!std::filesystem::exists(base + ".off")) return false;
   h.human = read_labeled_mesh(base + ".off", base + ".seg");
-  for(const Segmentation_cut& c : segmentation_cuts(h.human.mesh, h.human.face_labels))
-    if(c.edges == int(c.vertices.size())) {
-      h.cuts.push_back(c.vertices);
-      h.clicks.push_back(central_cut_vertex(h.human.mesh, c.vertices));
-    }
+  for(const Segmentation_cut& c : joint_cuts(segmentation_cuts(h.human.mesh, h.human.face_labels))) {
+    h.cuts.push_back(c.vertices);
+    h.clicks.push_back(central_cut_vertex(h.human.mesh, c.vertices));
+  }
   h.diagonal = internal::bounding_box_diagonal(h.human.mesh.points);
   return true;
 }

@@ -137,4 +137,20 @@ TEST(Segmentation_measures, CutsAreTheSeamsBetweenLabelPairs)
   EXPECT_DOUBLE_EQ(cut_distance(m, cuts[1].vertices, {6}), 0.5);
 }
 
+// The cuts a user would click: closed loops, and an open stretch only where
+// it is the longest of one of its two parts (a phalanx's seam along the
+// next finger is not; the stretch to its own neighbour is).
+TEST(Segmentation_measures, JointCutsAreLoopsAndEachPartsLongestStretch)
+{
+  const std::vector<Segmentation_cut> cuts{{0, 1, {1, 2, 3, 4}, 3},
+                                           {1, 2, {5, 6}, 1},
+                                           {2, 3, {7, 8, 9}, 2},
+                                           {0, 4, {10, 11, 12}, 3}};
+  const std::vector<Segmentation_cut> joints = joint_cuts(cuts);
+  ASSERT_EQ(joints.size(), 3u);
+  EXPECT_EQ(joints[0].vertices, cuts[0].vertices); // the longest of parts 0 and 1
+  EXPECT_EQ(joints[1].vertices, cuts[2].vertices); // the longest of parts 2 and 3
+  EXPECT_EQ(joints[2].vertices, cuts[3].vertices); // a closed loop
+}
+
 } // namespace

@@ -51,6 +51,14 @@ void check_vertices(const Indexed_mesh& mesh, const std::vector<int>& vertices, 
 
 bool on_cut(const std::vector<int>& path, int v) { return std::find(path.begin(), path.end(), v) != path.end(); }
 
+// Sections around one limb: their axes within 20 degrees of each other and
+// their radii within a factor 1.5 (not a limb's and the body's it leaves).
+bool around_one_limb(const internal::Section& a, const internal::Section& b)
+{
+  return std::abs(a.axis.direction.normalized().dot(b.axis.direction.normalized())) > std::cos(20. * M_PI / 180.) &&
+         std::abs(std::log(a.axis.radius / b.axis.radius)) < std::log(1.5);
+}
+
 // Both closed paths (first vertex repeated last) step along one edge.
 bool share_an_edge(const std::vector<int>& a, const std::vector<int>& b)
 {
@@ -146,16 +154,17 @@ Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vect
       Section s = finder.snapped(v, through, options.snap_band);
       Cut_line line = line_of(v, s);
       std::vector<int> path = traced(v, line);
-      // Two cuts a ring of faces apart bound a thin ring, as people cut
-      // where an arm leaves the body; clicked there, both snap to the one
-      // crease, so the second keeps the section through its click. If that
-      // too coincides with or crosses a cut made, the click was on its joint.
-      if(conflicting(path, line) < found.size()) {
+      // Two cuts a ring of faces apart bound a thin ring of a limb, as
+      // people cut where an arm leaves the body; clicked there, both snap to
+      // the one crease, so the second keeps the section through its click
+      // when that goes around the same limb. Otherwise, or if that section
+      // too runs along or crosses a cut made, the click was on its joint.
+      if(const std::size_t met = conflicting(path, line); met < found.size()) {
+        if(!around_one_limb(sections[met], through)) same_joint(v, met);
         s = through;
         line = line_of(v, s);
         path = traced(v, line);
-        const std::size_t met = conflicting(path, line);
-        if(met < found.size()) same_joint(v, met);
+        if(const std::size_t still = conflicting(path, line); still < found.size()) same_joint(v, still);
       }
       found.push_back(v);
       sections.push_back(s);

@@ -174,6 +174,21 @@ std::vector<Segmentation_cut> segmentation_cuts(const Indexed_mesh& mesh, const 
   return cuts;
 }
 
+std::vector<Segmentation_cut> joint_cuts(const std::vector<Segmentation_cut>& cuts)
+{
+  std::map<int, std::size_t> longest_open;
+  for(const Segmentation_cut& c : cuts)
+    if(c.edges < int(c.vertices.size()))
+      for(int label : {c.first_label, c.second_label})
+        longest_open[label] = std::max(longest_open[label], c.vertices.size());
+  std::vector<Segmentation_cut> joints;
+  for(const Segmentation_cut& c : cuts)
+    if(c.edges == int(c.vertices.size()) || longest_open[c.first_label] == c.vertices.size() ||
+       longest_open[c.second_label] == c.vertices.size())
+      joints.push_back(c);
+  return joints;
+}
+
 int central_cut_vertex(const Indexed_mesh& mesh, const std::vector<int>& cut)
 {
   Eigen::RowVector3d centre = Eigen::RowVector3d::Zero();

@@ -94,8 +94,9 @@ struct Joint_cutting_result
 /// first. A snapped loop of fewer than `minimum_section_vertices` vertices
 /// is not taken. When a click's snapped cut runs along or crosses a cut
 /// already made (both clicks snapped to one crease), the section through
-/// the click is taken instead: two cuts a ring of faces apart bound a thin
-/// ring, as people cut where an arm leaves the body.
+/// the click is taken instead if it goes around the same limb: two cuts a
+/// ring of faces apart bound a thin ring, as people cut where an arm leaves
+/// the body.
 ///
 /// Throws `Input_error` naming the vertex for: a vertex out of range or in
 /// no face; a vertex on the body (no limb axis passes under it); a section

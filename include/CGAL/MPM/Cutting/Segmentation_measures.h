@@ -91,6 +91,15 @@ struct Segmentation_cut
 std::vector<Segmentation_cut> segmentation_cuts(const Indexed_mesh& mesh, const std::vector<int>& labels);
 
 /// \ingroup PkgMPMRef
+/// The cuts of `cuts` (`segmentation_cuts()`) a user would click as joints:
+/// the closed seam loops, and, where a part's seam runs along several
+/// neighbours (a phalanx touching the next finger, a ring pinched where an
+/// arm leaves the body), the longest open stretch of at least one of its
+/// two parts; the short stretches between touching neighbours are no joints.
+/// In the order of `cuts`.
+std::vector<Segmentation_cut> joint_cuts(const std::vector<Segmentation_cut>& cuts);
+
+/// \ingroup PkgMPMRef
 /// The vertex of `cut` (a vertex set, such as `Segmentation_cut::vertices`) nearest
 /// its centroid: where a user would click to name that cut. `cut` must not be empty.
 int central_cut_vertex(const Indexed_mesh& mesh, const std::vector<int>& cut);
