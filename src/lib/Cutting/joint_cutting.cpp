@@ -95,102 +95,142 @@ Joint_cutting_result Joint_cutter::cut(const std::vector<int>& vertices) const
 
 namespace internal {
 
-Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vector<int>& vertices)
+namespace {
+
+// The cuts accepted so far, one per click, and what decides whether the next
+// click is a joint of its own.
+class Click_cuts
 {
-  const Joint_cutting_options& options = finder.options();
-  const Indexed_mesh& mesh = finder.mesh();
-  const std::string& mesh_source = finder.source();
-  Joint_cutting_result result;
-  std::vector<int> found;
-  std::vector<Section> sections;
-  Cutting_options cutting;
-  cutting.feature_weight = options.feature_weight;
-  Cut_specification spec;
-  spec.source = "clicked vertices";
-  std::vector<std::vector<int>> paths;
+public:
+  explicit Click_cuts(const Joint_finder& finder) : finder_(finder), options_(finder.options())
+  {
+    cutting_.feature_weight = options_.feature_weight;
+  }
+
+  // The cut for a click at `v`; throws Input_error naming `v`.
+  void add(int v)
+  {
+    const std::size_t again = std::size_t(std::find(clicks_.begin(), clicks_.end(), v) - clicks_.begin());
+    if(again < clicks_.size()) same_joint(v, again);
+    const Section through = finder_.find(v);
+    Section s = finder_.snapped(v, through, options_.snap_band);
+    Cut_line line = line_of(v, s);
+    std::vector<int> path = traced(v, line);
+    // Two cuts a ring of faces apart bound a thin ring of a limb, as
+    // people cut where an arm leaves the body; clicked there, both snap to
+    // the one crease, so the second keeps the section through its click
+    // when that goes around the same limb. Otherwise, or if that section
+    // too runs along or crosses a cut made, the click was on its joint.
+    if(const std::size_t met = conflicting(path, line); met < clicks_.size()) {
+      if(!around_one_limb(sections_[met], through)) same_joint(v, met);
+      s = through;
+      line = line_of(v, s);
+      path = traced(v, line);
+      if(const std::size_t still = conflicting(path, line); still < clicks_.size()) same_joint(v, still);
+    }
+    clicks_.push_back(v);
+    sections_.push_back(s);
+    paths_.push_back(std::move(path));
+    lines_.push_back(std::move(line));
+  }
+
+  // Every accepted cut made at once, with its click, limb and section.
+  Joint_cutting_result result() const
+  {
+    const Indexed_mesh& mesh = finder_.mesh();
+    Cutting_result cut = cut_mesh(mesh, Cut_specification{lines_, {}, source}, cutting_, finder_.source());
+    Joint_cutting_result r;
+    r.mesh = std::move(cut.mesh);
+    for(std::size_t i = 0; i < clicks_.size(); ++i) {
+      Joint_cut c;
+      c.vertex = clicks_[i];
+      c.path = cut.paths[i];
+      c.length = cut.lengths[i];
+      c.limb_radius = sections_[i].axis.radius;
+      c.shift = std::abs(sections_[i].shift);
+      c.axis = sections_[i].axis.direction;
+      for(std::size_t k = 0; k + 1 < c.path.size(); ++k) c.centre += mesh.points.row(c.path[k]).transpose();
+      c.centre /= double(std::max<std::size_t>(c.path.size() - 1, 1));
+      r.cuts.push_back(std::move(c));
+    }
+    return r;
+  }
+
+private:
+  static constexpr const char* source = "clicked vertices";
+
   // Through the click when its section passes there, so that cuts which
   // meet at a click are seen to meet.
-  const auto line_of = [&](int v, const Section& s) {
+  Cut_line line_of(int v, const Section& s) const
+  {
     std::vector<int> loop = s.loop;
-    std::rotate(loop.begin(), std::find(loop.begin(), loop.end(), v) == loop.end() ? loop.begin() : std::find(loop.begin(), loop.end(), v), loop.end());
-    return Cut_line{anchors(mesh, loop, options.anchors), true, "at vertex " + std::to_string(v)};
-  };
+    const auto at = std::find(loop.begin(), loop.end(), v);
+    std::rotate(loop.begin(), at == loop.end() ? loop.begin() : at, loop.end());
+    return Cut_line{anchors(finder_.mesh(), loop, options_.anchors), true, "at vertex " + std::to_string(v)};
+  }
+
   // The line traced alone, so that a section whose points cannot be joined
   // in order is blamed on its click (and skipped) rather than failing all.
-  const auto traced = [&](int v, const Cut_line& line) {
+  std::vector<int> traced(int v, const Cut_line& line) const
+  {
     try {
-      return cut_mesh(mesh, Cut_specification{{line}, {}, spec.source}, cutting, mesh_source).paths.front();
+      return cut_mesh(finder_.mesh(), Cut_specification{{line}, {}, source}, cutting_, finder_.source()).paths.front();
     } catch(const Input_error& e) {
-      finder.fail(v, "the section across the limb there cannot be traced as a cut: " + e.problem());
+      finder_.fail(v, "the section across the limb there cannot be traced as a cut: " + e.problem());
     }
-    return std::vector<int>();
-  };
+  }
+
   // The first cut already made that `line` runs along or crosses: two
   // closed cuts of a sphere that do neither share no edge and make three
   // regions. Cuts may touch at a vertex: people cut an arm's base ring
   // pinched to a point.
-  const auto conflicting = [&](const std::vector<int>& path, const Cut_line& line) {
-    for(std::size_t i = 0; i < paths.size(); ++i) {
-      if(std::none_of(path.begin(), path.end(), [&](int u) { return on_cut(paths[i], u); })) continue;
-      if(share_an_edge(paths[i], path)) return i;
+  std::size_t conflicting(const std::vector<int>& path, const Cut_line& line) const
+  {
+    for(std::size_t i = 0; i < paths_.size(); ++i) {
+      if(std::none_of(path.begin(), path.end(), [&](int u) { return on_cut(paths_[i], u); })) continue;
+      if(share_an_edge(paths_[i], path)) return i;
       try {
-        if(cut_mesh(mesh, Cut_specification{{spec.cuts[i], line}, {}, spec.source}, cutting, mesh_source).regions == 3)
+        if(cut_mesh(finder_.mesh(), Cut_specification{{lines_[i], line}, {}, source}, cutting_, finder_.source())
+             .regions == 3)
           continue;
       } catch(const Input_error&) {
       }
       return i;
     }
-    return paths.size();
-  };
-  const auto same_joint = [&](int v, std::size_t made) {
-    finder.fail(v, "is on the same joint as " + vertex_name(found[made]) +
-                     " (its cut would run along or cross the cut made there): click each joint once");
-  };
+    return paths_.size();
+  }
+
+  [[noreturn]] void same_joint(int v, std::size_t made) const
+  {
+    finder_.fail(v, "is on the same joint as " + vertex_name(clicks_[made]) +
+                      " (its cut would run along or cross the cut made there): click each joint once");
+  }
+
+  const Joint_finder& finder_;
+  const Joint_cutting_options& options_;
+  Cutting_options cutting_;
+  std::vector<int> clicks_;
+  std::vector<Section> sections_;
+  std::vector<std::vector<int>> paths_;
+  std::vector<Cut_line> lines_;
+};
+
+} // namespace
+
+Joint_cutting_result cut_at_vertices(const Joint_finder& finder, const std::vector<int>& vertices)
+{
+  Click_cuts cuts(finder);
+  std::vector<Skipped_click> skipped;
   for(int v : vertices) {
     try {
-      const std::size_t again = std::size_t(std::find(found.begin(), found.end(), v) - found.begin());
-      if(again < found.size()) same_joint(v, again);
-      const Section through = finder.find(v);
-      Section s = finder.snapped(v, through, options.snap_band);
-      Cut_line line = line_of(v, s);
-      std::vector<int> path = traced(v, line);
-      // Two cuts a ring of faces apart bound a thin ring of a limb, as
-      // people cut where an arm leaves the body; clicked there, both snap to
-      // the one crease, so the second keeps the section through its click
-      // when that goes around the same limb. Otherwise, or if that section
-      // too runs along or crosses a cut made, the click was on its joint.
-      if(const std::size_t met = conflicting(path, line); met < found.size()) {
-        if(!around_one_limb(sections[met], through)) same_joint(v, met);
-        s = through;
-        line = line_of(v, s);
-        path = traced(v, line);
-        if(const std::size_t still = conflicting(path, line); still < found.size()) same_joint(v, still);
-      }
-      found.push_back(v);
-      sections.push_back(s);
-      paths.push_back(std::move(path));
-      spec.cuts.push_back(std::move(line));
+      cuts.add(v);
     } catch(const Input_error& e) {
-      if(!options.skip_unfound) throw;
-      result.skipped.push_back({v, e.what()});
+      if(!finder.options().skip_unfound) throw;
+      skipped.push_back({v, e.what()});
     }
   }
-
-  Cutting_result cut = cut_mesh(mesh, spec, cutting, mesh_source);
-
-  result.mesh = std::move(cut.mesh);
-  for(std::size_t i = 0; i < found.size(); ++i) {
-    Joint_cut c;
-    c.vertex = found[i];
-    c.path = cut.paths[i];
-    c.length = cut.lengths[i];
-    c.limb_radius = sections[i].axis.radius;
-    c.shift = std::abs(sections[i].shift);
-    c.axis = sections[i].axis.direction;
-    for(std::size_t k = 0; k + 1 < c.path.size(); ++k) c.centre += mesh.points.row(c.path[k]).transpose();
-    c.centre /= double(std::max<std::size_t>(c.path.size() - 1, 1));
-    result.cuts.push_back(std::move(c));
-  }
+  Joint_cutting_result result = cuts.result();
+  result.skipped = std::move(skipped);
   return result;
 }
 
