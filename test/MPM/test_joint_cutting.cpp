@@ -285,4 +285,24 @@ TEST(Joint_cutting, CutsFollowTheCreasePeopleCutAlong)
   EXPECT_LT(mean_of(snapped), 0.6 * mean_of(planar));
 }
 
+// A click where a short leg piece of ant_97 meets the thorax (labels 8 and
+// 20) lies on the thorax's surface as well as the leg's: the thorax's many
+// skeleton edges filled the axes tried, and the click cut the thorax 6.8%
+// of the diagonal away. The best fitting thinner limb is tried too.
+TEST(Joint_cutting, AClickAtALegsBaseCutsTheLegNotTheBody)
+{
+  Human_cuts h;
+  if(!read_human_cuts("ant_97", h))
+    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+  for(const Segmentation_cut& c : segmentation_cuts(h.human.mesh, h.human.face_labels))
+    if(c.first_label == 8 && c.second_label == 20) {
+      const int click = central_cut_vertex(h.human.mesh, c.vertices);
+      const Joint_cutting_result r = cut_at_vertices(h.human.mesh, {click}, Joint_cutting_options(), "ant_97.off");
+      ASSERT_EQ(r.cuts.size(), 1u);
+      EXPECT_LT(cut_distance(h.human.mesh, r.cuts[0].path, c.vertices), 0.01 * h.diagonal) << "click at vertex " << click;
+      return;
+    }
+  FAIL() << "ant_97 has no cut between labels 8 and 20";
+}
+
 } // namespace

@@ -225,6 +225,14 @@ std::vector<Limb_axis> Joint_finder::limb_axes(int v) const
     const Limb_axis axis = edge_axis(fits[k].second, p);
     if(axis.direction.allFinite()) axes.push_back(axis);
   }
+  // At a limb's base the thick body's many edges can fill the list: the
+  // best fitting edge of a limb much thinner than the best fit is tried too.
+  for(const auto& [misfit, e] : fits)
+    if(!axes.empty() && edge_radius_[e] < 0.6 * axes.front().radius) {
+      const Limb_axis axis = edge_axis(e, p);
+      if(axis.direction.allFinite()) axes.push_back(axis);
+      break;
+    }
   if(axes.empty()) fail(v, "the curve skeleton has no direction there");
   return axes;
 }

@@ -83,7 +83,9 @@ struct Joint_cutting_result
 /// The limb's axis comes from CGAL's mean curvature flow curve skeleton: the
 /// skeleton edges near the node the vertex contracted to whose limb surface
 /// the vertex lies on (its distance to the edge within half the limb's
-/// radius of that radius). The cut starts as the narrowest section of the
+/// radius of that radius): the eight that fit best, and the best fitting
+/// one of a limb thinner than 0.6 times the best fit's radius (at a limb's
+/// base, the body's edges fit as well). The cut starts as the narrowest section of the
 /// mesh through the vertex across one of these axes (the plane perpendicular
 /// to it or tilted by up to 20 degrees) that is a small loop around the axis,
 /// or a nearby one (see `Joint_cutting_options::search_range`). It snaps to
