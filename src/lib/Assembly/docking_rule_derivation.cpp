@@ -326,27 +326,45 @@ Docking_rule derive_repetition_rule(const Morphable_part_model& model, int type_
   return derive_docking_rule(model, {type_index, site_a}, {type_index, site_b});
 }
 
-std::vector<int> add_repetition_rules(Morphable_part_model& model)
+namespace {
+
+// Appends the derived rule of each pair that no rule docks yet, skipping
+// pairs whose sites are not two simple loops, and rebuilds the grammar
+// once: the pairs are distinct, so no added rule allows a later pair.
+std::vector<int> add_derived_rules(Morphable_part_model& model, const std::vector<std::pair<Site_ref, Site_ref>>& pairs)
 {
   std::vector<int> added;
   const Shape_grammar& grammar = model.grammar();
-  for(int t = 0; t < int(model.types.size()); ++t)
+  for(const auto& [a, b] : pairs)
   {
-    const Part_type& type = model.types[t];
-    if(type.sites.size() != 2) continue;
-    if(type.sites[0].kind != Docking_kind::boundary || type.sites[1].kind != Docking_kind::boundary) continue;
-    if(grammar.allows({t, 0}, {t, 1})) continue;
+    if(grammar.allows(a, b)) continue;
     Docking_rule rule;
     try {
-      rule = derive_repetition_rule(model, t, 0, 1);
+      rule = derive_docking_rule(model, a, b);
     } catch(const Input_error&) {
-      continue; // not two simple loops: no repetition
+      continue;
     }
     added.push_back(static_cast<int>(model.rules.size()));
     model.rules.push_back(std::move(rule));
   }
   if(!added.empty()) model.update_grammar();
   return added;
+}
+
+} // namespace
+
+std::vector<int> add_repetition_rules(Morphable_part_model& model)
+{
+  // Each type with two boundary sites docked to a copy of itself.
+  std::vector<std::pair<Site_ref, Site_ref>> repetitions;
+  for(int t = 0; t < int(model.types.size()); ++t)
+  {
+    const Part_type& type = model.types[t];
+    if(type.sites.size() == 2 && type.sites[0].kind == Docking_kind::boundary &&
+       type.sites[1].kind == Docking_kind::boundary)
+      repetitions.push_back({{t, 0}, {t, 1}});
+  }
+  return add_derived_rules(model, repetitions);
 }
 
 std::vector<int> add_bridging_rules(Morphable_part_model& model)
@@ -374,24 +392,7 @@ std::vector<int> add_bridging_rules(Morphable_part_model& model)
         bridges.insert({std::min(sites[0], sites[1]), std::max(sites[0], sites[1])});
     }
   }
-  // The pairs are distinct, so one added rule never allows a later pair:
-  // the grammar is rebuilt once, as for repetition rules.
-  std::vector<int> added;
-  const Shape_grammar& grammar = model.grammar();
-  for(const auto& [a, b] : bridges)
-  {
-    if(grammar.allows(a, b)) continue;
-    Docking_rule rule;
-    try {
-      rule = derive_docking_rule(model, a, b);
-    } catch(const Input_error&) {
-      continue; // not two simple loops: no bridge
-    }
-    added.push_back(static_cast<int>(model.rules.size()));
-    model.rules.push_back(std::move(rule));
-  }
-  if(!added.empty()) model.update_grammar();
-  return added;
+  return add_derived_rules(model, {bridges.begin(), bridges.end()});
 }
 
 } // namespace MPM
