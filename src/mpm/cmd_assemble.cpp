@@ -176,6 +176,7 @@ int run_assemble(const Args& args, Context& context)
   const std::vector<std::string> warnings = assembly_doubts(assembly, reference, closed);
   const std::size_t solved_faces = assembly.mesh.triangles.size();
   const int capped = args.flag("keep-holes") ? 0 : cap_free_sites(model, assembly);
+  const std::size_t cap_faces = assembly.mesh.triangles.size() - solved_faces;
   context.progress.update("writing " + output, 0.95);
   write_assembly_mesh(assembly, output, context.meshes);
   context.progress.done();
@@ -190,7 +191,7 @@ int run_assemble(const Args& args, Context& context)
   for(const auto& [key, value] : details.items()) summary[key] = value;
   summary["training_energy_per_part"] = reference;
   summary["capped_free_sites"] = capped;
-  summary["cap_faces"] = assembly.mesh.triangles.size() - solved_faces;
+  summary["cap_faces"] = cap_faces;
   summary["warnings"] = warnings;
   summary["output"] = output;
   if(args.has("save-graph")) summary["saved_graph"] = args.text("save-graph");
@@ -205,7 +206,7 @@ int run_assemble(const Args& args, Context& context)
   for(const std::string& e : edits) std::cout << "  edit              " << e << "\n";
   if(capped > 0)
     std::cout << "  capped            " << capped << " free site" << (capped > 1 ? "s" : "") << " (a removed branch's hole; "
-              << assembly.mesh.triangles.size() - solved_faces << " faces)\n";
+              << cap_faces << " faces)\n";
   std::cout << "  iterations        " << assembly.report.iterations
             << (assembly.report.converged ? " (converged)" : " (not converged: iteration cap)") << "\n"
             << "  residual energy   " << format_number(assembly.residual_energy, 6) << " ("

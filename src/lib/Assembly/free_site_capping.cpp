@@ -6,13 +6,14 @@
 #include <CGAL/MPM/IO/Face_graph_conversion.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
+#include <CGAL/MPM/internal/Part_graph_problem.h>
+#include <CGAL/MPM/internal/Training_segments.h>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <algorithm>
 #include <iterator>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -27,26 +28,14 @@ namespace {
 // The cap as it was made (its faces over the capped mesh, with the loop it
 // closes) is the cluster's target: it keeps its shape, turned with its loop,
 // as a part with one instance does.
-Cluster cap_cluster(const Indexed_mesh& mesh, const std::vector<std::size_t>& faces, const std::string& name)
+Cluster cap_cluster(const Indexed_mesh& mesh, const std::vector<int>& faces, const std::string& name)
 {
   Cluster c;
   c.name = name;
-  std::map<int, int> local;
-  for(std::size_t f : faces)
-  {
-    Triangle t;
-    for(std::size_t k = 0; k < 3; ++k)
-    {
-      const int v = mesh.triangles[f][k];
-      const auto inserted = local.insert({v, int(c.vertices.size())});
-      if(inserted.second) c.vertices.push_back(v);
-      t[k] = inserted.first->second;
-    }
-    c.triangles.push_back(t);
-  }
+  std::vector<int> local_of(std::size_t(mesh.number_of_vertices()), -1);
+  internal::local_part(mesh, faces, local_of, c.vertices, c.triangles);
   c.edges = internal::mesh_edges(c.triangles);
-  c.mean.resize(Eigen::Index(c.vertices.size()), 3);
-  for(std::size_t i = 0; i < c.vertices.size(); ++i) c.mean.row(Eigen::Index(i)) = mesh.points.row(c.vertices[i]);
+  c.mean = internal::gather_rows(mesh.points, c.vertices);
   c.modes = Eigen::MatrixXd::Zero(c.mean.rows() * 3, 0);
   c.sigmas = Eigen::VectorXd::Zero(0);
   return c;
@@ -69,7 +58,7 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
   Indexed_surface_mesh surface = internal::to_surface_mesh(a.mesh, "assembly", "capping free sites");
   std::vector<Indexed_surface_mesh::Halfedge_index> borders;
   PMP::extract_boundary_cycles(surface, std::back_inserter(borders));
-  std::vector<std::vector<std::size_t>> cap_faces;
+  std::vector<std::vector<int>> cap_faces;
   std::vector<int> cap_nodes;
   for(const auto h : borders)
   {
@@ -92,7 +81,7 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
     {
       a.face_nodes[std::size_t(f)] = node;
       a.face_types[std::size_t(f)] = type;
-      cap_faces.back().push_back(std::size_t(f));
+      cap_faces.back().push_back(int(f));
     }
   }
   if(cap_faces.empty()) return 0;
