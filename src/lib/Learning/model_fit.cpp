@@ -7,6 +7,7 @@
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Correspondence_surface.h>
+#include <CGAL/MPM/internal/Training_segments.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -40,19 +41,8 @@ Segment extract_segment(const Indexed_mesh& mesh, const std::vector<int>& faces,
 {
   Segment s;
   s.label = label;
-  std::map<int, int> local;
-  for(int f : faces)
-  {
-    Triangle t;
-    for(int k = 0; k < 3; ++k)
-    {
-      const int v = mesh.triangles[std::size_t(f)][std::size_t(k)];
-      const auto inserted = local.insert({v, static_cast<int>(s.vertices.size())});
-      if(inserted.second) s.vertices.push_back(v);
-      t[std::size_t(k)] = inserted.first->second;
-    }
-    s.mesh.triangles.push_back(t);
-  }
+  std::vector<int> local_of(std::size_t(mesh.number_of_vertices()), -1);
+  internal::local_part(mesh, faces, local_of, s.vertices, s.mesh.triangles);
   s.mesh.points.resize(Eigen::Index(s.vertices.size()), 3);
   for(std::size_t k = 0; k < s.vertices.size(); ++k) s.mesh.points.row(Eigen::Index(k)) = mesh.points.row(s.vertices[k]);
   return s;
@@ -411,8 +401,7 @@ Model_fit fit_morphable_part_model(const Morphable_part_model& model, const Labe
   validate_labeled_mesh(mesh);
   validate_segmentation(mesh);
   if(model.types.empty()) throw Input_error(mesh.source, "", "the model has no part types to fit");
-  std::map<int, std::vector<int>> faces_of_label;
-  for(int f = 0; f < mesh.mesh.number_of_faces(); ++f) faces_of_label[mesh.face_labels[std::size_t(f)]].push_back(f);
+  const std::map<int, std::vector<int>> faces_of_label = internal::faces_by_label(mesh);
   const std::vector<int> labels = labels_to_fit(mesh, faces_of_label, options);
   const Model_templates templates = model_templates(model);
 

@@ -7,6 +7,7 @@
 #include <CGAL/MPM/internal/Bounding_box.h>
 #include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Message_text.h>
+#include <CGAL/MPM/internal/Training_segments.h>
 
 #include <CGAL/MPM/Correspondence/Dense_correspondence.h>
 #include <CGAL/MPM/Input_error.h>
@@ -29,36 +30,18 @@ using internal::quoted;
 
 namespace {
 
+using internal::faces_by_label;
 using internal::faces_of_edges;
 
 std::string segment_name(int label) { return "segment " + std::to_string(label); }
-
-std::map<int, std::vector<int>> faces_by_label(const Labeled_mesh& lm)
-{
-  std::map<int, std::vector<int>> r;
-  for(int f = 0; f < lm.mesh.number_of_faces(); ++f) r[lm.face_labels[f]].push_back(f);
-  return r;
-}
 
 // The faces as a mesh of their own, vertices numbered by first appearance
 // (the learner's convention, so connectivity comparisons agree with it).
 Indexed_mesh segment_mesh(const Indexed_mesh& mesh, const std::vector<int>& faces)
 {
-  std::unordered_map<int, int> local;
-  std::vector<int> vertices;
+  std::vector<int> local_of(std::size_t(mesh.number_of_vertices()), -1), vertices;
   Indexed_mesh r;
-  r.triangles.reserve(faces.size());
-  for(int f : faces)
-  {
-    Triangle t;
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto it = local.emplace(mesh.triangles[f][k], int(vertices.size()));
-      if(it.second) vertices.push_back(mesh.triangles[f][k]);
-      t[k] = it.first->second;
-    }
-    r.triangles.push_back(t);
-  }
+  internal::local_part(mesh, faces, local_of, vertices, r.triangles);
   r.points.resize(Eigen::Index(vertices.size()), 3);
   for(std::size_t i = 0; i < vertices.size(); ++i) r.points.row(Eigen::Index(i)) = mesh.points.row(vertices[i]);
   return r;
