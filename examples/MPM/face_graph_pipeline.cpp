@@ -63,15 +63,27 @@ void run(const std::string& name, const std::string& mesh_path, const MPM::Cut_s
     {low, get(vpm, low)}, {high, Point(top.x(), top.y() + lift, top.z())}};
   const MPM::Edit_result deformed = MPM::deform(model, edited, handles);
 
-  // Reassemble the example's part graph into a new mesh; faces know their node.
+  // Reassemble the example's part graph into a new mesh; faces know their
+  // node and part type, vertices whether they join two parts.
   Mesh assembled;
   auto nodes = get(CGAL::dynamic_face_property_t<int>(), assembled);
-  const MPM::Assembly assembly = MPM::assemble(model, MPM::part_graph_of_example(model), assembled, nodes);
+  auto types = get(CGAL::dynamic_face_property_t<int>(), assembled);
+  auto seams = get(CGAL::dynamic_vertex_property_t<int>(), assembled);
+  const MPM::Assembly assembly =
+    MPM::assemble(model, MPM::part_graph_of_example(model), assembled, nodes, MPM::Assembly_options(),
+                  MPM::parameters::face_part_type_map(types).vertex_is_seam_map(seams));
+  std::vector<int> faces_of_type(model.types.size(), 0);
+  for(auto f : faces(assembled)) ++faces_of_type[std::size_t(get(types, f))];
+  int seam_vertices = 0;
+  for(vertex_descriptor v : vertices(assembled)) seam_vertices += get(seams, v) ? 1 : 0;
 
   std::cout << name << ": " << cut.regions << " parts, " << model.types.size() << " part types; deformed in "
             << deformed.report.iterations << " iterations (highest vertex now at y = " << get(vpm, high).y()
-            << "); assembled " << num_vertices(assembled) << " vertices, " << num_faces(assembled)
-            << " faces, energy per part " << assembly.energy_per_part() << "\n";
+            << "); assembled " << num_vertices(assembled) << " vertices (" << seam_vertices << " on seams), "
+            << num_faces(assembled) << " faces (";
+  for(std::size_t t = 0; t < faces_of_type.size(); ++t)
+    std::cout << (t ? ", " : "") << faces_of_type[t] << " " << model.types[t].name;
+  std::cout << "), energy per part " << assembly.energy_per_part() << "\n";
 }
 
 int main(int argc, char** argv)

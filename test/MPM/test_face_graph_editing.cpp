@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -70,6 +71,22 @@ const Reference& reference()
   return r;
 }
 
+// Whether each vertex of `g` has faces of more than one part, read off the
+// mesh's own adjacency: the reference for `vertex_is_seam_map`.
+template <class Mesh, class PartMap, class SeamMap>
+void expect_seams_where_parts_meet(const Mesh& g, PartMap parts, SeamMap seams)
+{
+  int seam_vertices = 0;
+  for(auto v : vertices(g)) {
+    std::set<int> around;
+    for(auto f : CGAL::faces_around_target(halfedge(v, g), g))
+      if(f != boost::graph_traits<Mesh>::null_face()) around.insert(get(parts, f));
+    EXPECT_EQ(bool(get(seams, v)), around.size() > 1);
+    seam_vertices += get(seams, v) ? 1 : 0;
+  }
+  EXPECT_GT(seam_vertices, 0);
+}
+
 double largest_difference(const Point_matrix& a, const Point_matrix& b)
 {
   return a.rows() == b.rows() ? (a - b).rowwise().norm().maxCoeff() : HUGE_VAL;
@@ -98,8 +115,14 @@ void run_pipeline(double tolerance)
   // Deform: the result is written into the mesh, handles are its vertices.
   Mesh edited;
   auto parts = get(CGAL::dynamic_face_property_t<int>(), edited);
-  copy_training_example(model, 0, edited, parts);
+  auto types = get(CGAL::dynamic_face_property_t<int>(), edited);
+  auto seams = get(CGAL::dynamic_vertex_property_t<int>(), edited);
+  copy_training_example(model, 0, edited, parts, parameters::face_part_type_map(types).vertex_is_seam_map(seams));
   EXPECT_EQ(face_labels_from_map(edited, parts), ref.model.examples[0].face_labels);
+  for(auto f : faces(edited))
+    for(const Part_node& node : ref.model.examples[0].graph.nodes)
+      if(node.label == get(parts, f)) EXPECT_EQ(get(types, f), node.type);
+  expect_seams_where_parts_meet(edited, parts, seams);
   const Handle_set h = tip_handles(ref.model.examples[0].mesh);
   std::vector<vertex_descriptor> vertex(vertices(edited).begin(), vertices(edited).end());
   std::vector<std::pair<vertex_descriptor, Point>> handles;
@@ -122,8 +145,13 @@ void run_pipeline(double tolerance)
   // Assemble into a new mesh with the node of each face.
   Mesh assembled;
   auto nodes = get(CGAL::dynamic_face_property_t<int>(), assembled);
-  const Assembly a = assemble(model, part_graph_of_example(model), assembled, nodes);
+  auto node_types = get(CGAL::dynamic_face_property_t<int>(), assembled);
+  auto node_seams = get(CGAL::dynamic_vertex_property_t<int>(), assembled);
+  const Assembly a = assemble(model, part_graph_of_example(model), assembled, nodes, Assembly_options(),
+                              parameters::vertex_is_seam_map(node_seams).face_part_type_map(node_types));
   EXPECT_EQ(face_labels_from_map(assembled, nodes), ref.assembly.face_nodes);
+  for(auto f : faces(assembled)) EXPECT_EQ(get(node_types, f), a.graph.nodes[std::size_t(get(nodes, f))].type);
+  expect_seams_where_parts_meet(assembled, nodes, node_seams);
   const Indexed_mesh assembled_mesh = to_indexed_mesh(assembled);
   EXPECT_EQ(assembled_mesh.triangles, ref.assembly.mesh.triangles);
   EXPECT_LT(largest_difference(assembled_mesh.points, ref.assembly.mesh.points), tolerance * diagonal);

@@ -7,7 +7,11 @@
 #include <CGAL/MPM/Editing/Editing.h>
 #include <CGAL/MPM/IO/Face_graph_conversion.h>
 #include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/Named_parameters.h>
 
+#include <type_traits>
+
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,6 +38,47 @@ Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceL
   return cut;
 }
 
+namespace internal {
+
+// Whether each vertex of `mesh` has faces of more than one part.
+inline std::vector<bool> seam_vertices(const Indexed_mesh& mesh, const std::vector<int>& face_parts)
+{
+  std::vector<int> part(std::size_t(mesh.number_of_vertices()), -1);
+  std::vector<bool> seam(part.size(), false);
+  for(std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for(int v : mesh.triangles[t]) {
+      int& p = part[std::size_t(v)];
+      if(p >= 0 && p != face_parts[t]) seam[std::size_t(v)] = true;
+      p = face_parts[t];
+    }
+  return seam;
+}
+
+// Fills the part maps of a mesh `copy_to_face_graph()` made from `mesh`
+// (`added`: its faces in triangle order): `face_parts` always, the part
+// type and seam maps when `np` has them.
+template <class FaceGraph, class FacePartMap, class NamedParameters>
+void write_part_maps(const Indexed_mesh& mesh, const FaceGraph& g,
+                     const std::vector<typename boost::graph_traits<FaceGraph>::face_descriptor>& added,
+                     const std::vector<int>& face_parts, const std::vector<int>& face_types, FacePartMap parts,
+                     const NamedParameters& np)
+{
+  using parameters::get_parameter;
+  using Not_given = CGAL::internal_np::Param_not_found;
+  for(std::size_t t = 0; t < added.size(); ++t) put(parts, added[t], face_parts[t]);
+  const auto types = get_parameter(np, internal_np::face_part_type);
+  if constexpr(!std::is_same_v<std::decay_t<decltype(types)>, Not_given>)
+    for(std::size_t t = 0; t < added.size(); ++t) put(types, added[t], face_types[t]);
+  const auto seams = get_parameter(np, internal_np::vertex_is_seam);
+  if constexpr(!std::is_same_v<std::decay_t<decltype(seams)>, Not_given>) {
+    const std::vector<bool> seam = seam_vertices(mesh, face_parts);
+    std::size_t i = 0;
+    for(auto v : vertices(g)) put(seams, v, seam[i++]);
+  }
+}
+
+} // namespace internal
+
 /// \ingroup PkgMPMRef
 /// Fills the empty `g` with training example `example` of `model` as
 /// learned (a part rebuilt by correspondence has its type's triangles) and
@@ -42,7 +87,9 @@ Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceL
 ///
 /// \tparam MutableFaceGraph a model of `MutableFaceGraph`
 /// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
-/// Named parameters: `vertex_point_map`.
+/// Named parameters: `vertex_point_map`, and the package's
+/// `face_part_type_map` (each face's part type) and `vertex_is_seam_map`
+/// (whether a vertex lies between two parts), see `Named_parameters.h`.
 template <class MutableFaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
 void copy_training_example(const Morphable_part_model& model, int example, MutableFaceGraph& g,
                            FaceLabelMap face_labels, const NamedParameters& np = parameters::default_values())
@@ -51,8 +98,12 @@ void copy_training_example(const Morphable_part_model& model, int example, Mutab
     throw Input_error("model", "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   const Training_example& e = model.examples[std::size_t(example)];
-  const auto added = copy_to_face_graph(e.mesh, g, np);
-  for(std::size_t t = 0; t < added.size(); ++t) put(face_labels, added[t], e.face_labels[t]);
+  std::map<int, int> type_of_label;
+  for(const Part_node& node : e.graph.nodes) type_of_label[node.label] = node.type;
+  std::vector<int> face_types;
+  face_types.reserve(e.face_labels.size());
+  for(int label : e.face_labels) face_types.push_back(type_of_label.count(label) ? type_of_label[label] : -1);
+  internal::write_part_maps(e.mesh, g, copy_to_face_graph(e.mesh, g, np), e.face_labels, face_types, face_labels, np);
 }
 
 namespace internal {
@@ -134,20 +185,21 @@ Edit_result caricature(const Morphable_part_model& model, double factor, FaceGra
 }
 
 /// \ingroup PkgMPMRef
-/// Assembles and embeds `graph` (`assemble()`) into the empty `g` and writes the part graph node of each face into `face_nodes`
-/// (its part type is `graph.nodes[node].type`).
+/// Assembles and embeds `graph` (`assemble()`) into the empty `g` and
+/// writes the part graph node of each face into `face_nodes` (its part type
+/// is `graph.nodes[node].type`).
 ///
 /// \tparam MutableFaceGraph a model of `MutableFaceGraph`
 /// \tparam FaceNodeMap a `WritablePropertyMap` from the face descriptor to `int`
-/// Named parameters: `vertex_point_map`.
+/// Named parameters: `vertex_point_map`, `face_part_type_map` and
+/// `vertex_is_seam_map` (the seams between nodes), as for `copy_training_example()`.
 template <class MutableFaceGraph, class FaceNodeMap, class NamedParameters = parameters::Default_named_parameters>
 Assembly assemble(const Morphable_part_model& model, const Part_graph& graph, MutableFaceGraph& g,
                   FaceNodeMap face_nodes, const Assembly_options& options = Assembly_options(),
                   const NamedParameters& np = parameters::default_values())
 {
   Assembly a = assemble(model, graph, options);
-  const auto added = copy_to_face_graph(a.mesh, g, np);
-  for(std::size_t t = 0; t < added.size(); ++t) put(face_nodes, added[t], a.face_nodes[t]);
+  internal::write_part_maps(a.mesh, g, copy_to_face_graph(a.mesh, g, np), a.face_nodes, a.face_types, face_nodes, np);
   return a;
 }
 
