@@ -9,10 +9,9 @@
 #include <CGAL/MPM/Cutting/Mesh_cutting.h>
 #include <CGAL/MPM/Named_parameters.h>
 
-#include <type_traits>
-
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
