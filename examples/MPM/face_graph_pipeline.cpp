@@ -3,7 +3,9 @@
 // installed) an OpenMesh triangle mesh is cut into parts (labels in a face
 // property map), learned from, deformed in place (the result written through
 // the vertex point map, as Surface_mesh_deformation does) and reassembled
-// into a new mesh whose faces know their part.
+// into a new mesh whose faces know their part graph node and part type and
+// whose vertices know whether they lie on a seam (property maps again); a
+// learned part type, moved along its first mode, is copied out as a mesh.
 //
 // Usage: face_graph_pipeline mesh.off cuts.json annotation.json
 // For instance, with CGAL's sample meshes (Debian: libcgal-demo) extracted to data/:
@@ -24,6 +26,7 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #endif
 
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <utility>
@@ -77,13 +80,28 @@ void run(const std::string& name, const std::string& mesh_path, const MPM::Cut_s
   int seam_vertices = 0;
   for(vertex_descriptor v : vertices(assembled)) seam_vertices += get(seams, v) ? 1 : 0;
 
+  // The last part type's shape two standard deviations along its first
+  // mode (the legs vary; the one body does not), as a mesh of its own; its
+  // seams are where it docks.
+  const int type = int(model.types.size()) - 1;
+  const MPM::Shape_space& space = model.types[std::size_t(type)].space;
+  Eigen::VectorXd along_first_mode = Eigen::VectorXd::Zero(space.number_of_modes());
+  if(space.number_of_modes() > 0) along_first_mode[0] = 2. * std::sqrt(space.variances[0]);
+  Mesh part;
+  auto part_seams = get(CGAL::dynamic_vertex_property_t<int>(), part);
+  MPM::copy_part_shape(model, type, along_first_mode, part, MPM::parameters::vertex_is_seam_map(part_seams));
+  int part_seam_vertices = 0;
+  for(vertex_descriptor v : vertices(part)) part_seam_vertices += get(part_seams, v) ? 1 : 0;
+
   std::cout << name << ": " << cut.regions << " parts, " << model.types.size() << " part types; deformed in "
             << deformed.report.iterations << " iterations (highest vertex now at y = " << get(vpm, high).y()
             << "); assembled " << num_vertices(assembled) << " vertices (" << seam_vertices << " on seams), "
             << num_faces(assembled) << " faces (";
   for(std::size_t t = 0; t < faces_of_type.size(); ++t)
     std::cout << (t ? ", " : "") << faces_of_type[t] << " " << model.types[t].name;
-  std::cout << "), energy per part " << assembly.energy_per_part() << "\n";
+  std::cout << "), energy per part " << assembly.energy_per_part() << "; " << model.types[std::size_t(type)].name
+            << " at +2 sigma on its first mode: " << num_vertices(part) << " vertices (" << part_seam_vertices
+            << " on seams)\n";
 }
 
 int main(int argc, char** argv)

@@ -193,3 +193,57 @@ TEST(FaceGraphPipeline, results_need_the_example_mesh)
     EXPECT_NE(std::string(e.what()).find("has 4 vertices"), std::string::npos) << e.what();
   }
 }
+
+// A learned part as the user's mesh: the type's triangles at the shape the
+// coordinates give, its boundary docking sites marked as seams.
+TEST(FaceGraphPipeline, a_part_shape_is_its_space_at_the_coordinates)
+{
+  const Morphable_part_model& model = reference().model;
+  int type = 0;
+  while(type < int(model.types.size()) && model.types[std::size_t(type)].space.number_of_modes() == 0) ++type;
+  ASSERT_LT(type, int(model.types.size())) << "no part type with modes";
+  const Part_type& t = model.types[std::size_t(type)];
+  Eigen::VectorXd coordinates = Eigen::VectorXd::Zero(t.space.number_of_modes());
+  coordinates[0] = 2. * std::sqrt(t.space.variances[0]);
+
+  Surface_mesh part;
+  auto types = get(CGAL::dynamic_face_property_t<int>(), part);
+  auto seams = get(CGAL::dynamic_vertex_property_t<bool>(), part);
+  copy_part_shape(model, type, coordinates, part, parameters::face_part_type_map(types).vertex_is_seam_map(seams));
+  const Indexed_mesh copied = to_indexed_mesh(part);
+  EXPECT_EQ(copied.triangles, t.triangles);
+  EXPECT_LT(largest_difference(copied.points, t.space.mean + (t.space.modes.col(0) * coordinates[0])
+                                                               .reshaped<Eigen::RowMajor>(t.number_of_vertices, 3)),
+            1e-12);
+  EXPECT_GT(largest_difference(copied.points, t.space.mean), 0.);
+  for(auto f : faces(part)) EXPECT_EQ(get(types, f), type);
+  std::set<int> seam_vertices;
+  for(const Docking_site& site : t.sites)
+    if(site.kind == Docking_kind::boundary) seam_vertices.insert(site.vertices.begin(), site.vertices.end());
+  ASSERT_FALSE(seam_vertices.empty());
+  int i = 0;
+  for(auto v : vertices(part)) EXPECT_EQ(get(seams, v), seam_vertices.count(i++) > 0);
+
+  Surface_mesh mean;
+  copy_part_shape(model, type, Eigen::VectorXd(), mean);
+  EXPECT_LT(largest_difference(to_indexed_mesh(mean).points, t.space.mean), 1e-15);
+}
+
+TEST(FaceGraphPipeline, a_part_shape_needs_a_type_and_its_coordinates)
+{
+  const Morphable_part_model& model = reference().model;
+  const auto error_of = [&](int type, const Eigen::VectorXd& coordinates) {
+    Surface_mesh part;
+    try {
+      copy_part_shape(model, type, coordinates, part);
+    } catch(const Input_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of(int(model.types.size()), Eigen::VectorXd()).find("does not exist"), std::string::npos);
+  EXPECT_NE(error_of(-1, Eigen::VectorXd()).find("part type -1"), std::string::npos);
+  const int modes = model.types[0].space.number_of_modes();
+  EXPECT_NE(error_of(0, Eigen::VectorXd::Zero(modes + 1)).find(std::to_string(modes + 1) + " coordinates were given"),
+            std::string::npos);
+}

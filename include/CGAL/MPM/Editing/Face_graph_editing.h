@@ -53,27 +53,39 @@ inline std::vector<bool> seam_vertices(const Indexed_mesh& mesh, const std::vect
   return seam;
 }
 
-// Fills the part maps of a mesh `copy_to_face_graph()` made from `mesh`
-// (`added`: its faces in triangle order): `face_parts` always, the part
-// type and seam maps when `np` has them.
+// Fills the optional maps of `np` on a mesh `copy_to_face_graph()` made
+// (`added`: its faces in triangle order): the part type of triangle `t` is
+// `type_of(t)`, the seam vertices are `seams()` (one flag per vertex, in
+// the order of `vertices(g)`), computed only when asked for.
+template <class FaceGraph, class TypeOf, class Seams, class NamedParameters>
+void write_type_and_seam_maps(const FaceGraph& g,
+                              const std::vector<typename boost::graph_traits<FaceGraph>::face_descriptor>& added,
+                              const TypeOf& type_of, const Seams& seams, const NamedParameters& np)
+{
+  using parameters::get_parameter;
+  using Not_given = CGAL::internal_np::Param_not_found;
+  const auto type_map = get_parameter(np, internal_np::face_part_type);
+  if constexpr(!std::is_same_v<std::decay_t<decltype(type_map)>, Not_given>)
+    for(std::size_t t = 0; t < added.size(); ++t) put(type_map, added[t], type_of(t));
+  const auto seam_map = get_parameter(np, internal_np::vertex_is_seam);
+  if constexpr(!std::is_same_v<std::decay_t<decltype(seam_map)>, Not_given>) {
+    const std::vector<bool> seam = seams();
+    std::size_t i = 0;
+    for(auto v : vertices(g)) put(seam_map, v, seam[i++]);
+  }
+}
+
+// Fills the part maps of a mesh `copy_to_face_graph()` made from `mesh`:
+// `face_parts` always, the part type and seam maps when `np` has them.
 template <class FaceGraph, class FacePartMap, class NamedParameters>
 void write_part_maps(const Indexed_mesh& mesh, const FaceGraph& g,
                      const std::vector<typename boost::graph_traits<FaceGraph>::face_descriptor>& added,
                      const std::vector<int>& face_parts, const std::vector<int>& face_types, FacePartMap parts,
                      const NamedParameters& np)
 {
-  using parameters::get_parameter;
-  using Not_given = CGAL::internal_np::Param_not_found;
   for(std::size_t t = 0; t < added.size(); ++t) put(parts, added[t], face_parts[t]);
-  const auto types = get_parameter(np, internal_np::face_part_type);
-  if constexpr(!std::is_same_v<std::decay_t<decltype(types)>, Not_given>)
-    for(std::size_t t = 0; t < added.size(); ++t) put(types, added[t], face_types[t]);
-  const auto seams = get_parameter(np, internal_np::vertex_is_seam);
-  if constexpr(!std::is_same_v<std::decay_t<decltype(seams)>, Not_given>) {
-    const std::vector<bool> seam = seam_vertices(mesh, face_parts);
-    std::size_t i = 0;
-    for(auto v : vertices(g)) put(seams, v, seam[i++]);
-  }
+  write_type_and_seam_maps(
+    g, added, [&](std::size_t t) { return face_types[t]; }, [&] { return seam_vertices(mesh, face_parts); }, np);
 }
 
 } // namespace internal
@@ -103,6 +115,48 @@ void copy_training_example(const Morphable_part_model& model, int example, Mutab
   face_types.reserve(e.face_labels.size());
   for(int label : e.face_labels) face_types.push_back(type_of_label.count(label) ? type_of_label[label] : -1);
   internal::write_part_maps(e.mesh, g, copy_to_face_graph(e.mesh, g, np), e.face_labels, face_types, face_labels, np);
+}
+
+/// \ingroup PkgMPMRef
+/// Fills the empty `g` with one shape of part type `type` of `model`: its
+/// triangles at `mean + sum_k coordinates[k] * modes[k]`
+/// (`Shape_space::shape()`, the mean when `coordinates` is empty), in the
+/// frame of the mean. So a learned part can be looked at, written or
+/// processed as the user's own mesh type, for instance along a mode at two
+/// standard deviations.
+///
+/// \tparam MutableFaceGraph a model of `MutableFaceGraph`
+/// Named parameters: `vertex_point_map`, and the package's
+/// `face_part_type_map` (`type` on every face) and `vertex_is_seam_map`
+/// (the vertices of the type's boundary docking sites, where the part meets
+/// its neighbours).
+///
+/// Throws `Input_error` naming the type when it does not exist or when
+/// `coordinates` is neither empty nor one value per mode.
+template <class MutableFaceGraph, class NamedParameters = parameters::Default_named_parameters>
+void copy_part_shape(const Morphable_part_model& model, int type, const Eigen::VectorXd& coordinates,
+                     MutableFaceGraph& g, const NamedParameters& np = parameters::default_values())
+{
+  if(type < 0 || type >= static_cast<int>(model.types.size()))
+    throw Input_error("model", "part type " + std::to_string(type),
+                      "does not exist (the model has " + std::to_string(model.types.size()) + " part types)");
+  const Part_type& t = model.types[std::size_t(type)];
+  if(coordinates.size() != 0 && coordinates.size() != t.space.number_of_modes())
+    throw Input_error("model", "part type " + std::to_string(type) + " (" + t.name + ")",
+                      "has " + std::to_string(t.space.number_of_modes()) + " modes, but " +
+                        std::to_string(coordinates.size()) + " coordinates were given");
+  Indexed_mesh part;
+  part.points = t.space.shape(coordinates);
+  part.triangles = t.triangles;
+  const auto seams = [&] {
+    std::vector<bool> seam(std::size_t(t.number_of_vertices), false);
+    for(const Docking_site& site : t.sites)
+      if(site.kind == Docking_kind::boundary)
+        for(int v : site.vertices) seam[std::size_t(v)] = true;
+    return seam;
+  };
+  internal::write_type_and_seam_maps(g, copy_to_face_graph(part, g, np), [type](std::size_t) { return type; }, seams,
+                                     np);
 }
 
 namespace internal {
