@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -264,9 +265,10 @@ TEST(Joint_cutting, OneClickPerHumanCutOfAnAnt)
 }
 
 // Where people cut along a crease oblique to the limb (octopus arms near
-// the body), the cut snapped to the crease follows theirs far more closely
-// than the plane section through the click does (about 0.3% of the
-// diagonal on average against 0.7% when measured, doc/MPM/Cutting.md).
+// the body), the cut snapped to the crease follows theirs more closely
+// than the plane section through the click does (0.26% of the diagonal on
+// average against 0.34% when measured; 0.7% before the thinner limb's own
+// section was tried at a limb's flared base, doc/MPM/Cutting.md).
 // Every human cut is found: two arms' cuts whose centres lie within a limb
 // radius of each other near the body are two joints, not one.
 TEST(Joint_cutting, CutsFollowTheCreasePeopleCutAlong)
@@ -282,7 +284,25 @@ TEST(Joint_cutting, CutsFollowTheCreasePeopleCutAlong)
   ASSERT_EQ(snapped.size(), h.cuts.size());
   for(std::size_t i = 0; i < snapped.size(); ++i) EXPECT_LT(snapped[i], 0.01) << "cut " << i;
   EXPECT_LT(mean_of(snapped), 0.004);
-  EXPECT_LT(mean_of(snapped), 0.6 * mean_of(planar));
+  EXPECT_LT(mean_of(snapped), 0.85 * mean_of(planar));
+}
+
+// The distance (fraction of the diagonal) from the cut clicked alone at the
+// central vertex of the human cut between labels `first` and `second` of
+// PSB mesh `name` to that human cut; NaN when the mesh is absent.
+double one_click_distance(const std::string& name, int first, int second)
+{
+  Human_cuts h;
+  if(!read_human_cuts(name, h)) return std::nan("");
+  for(const Segmentation_cut& c : segmentation_cuts(h.human.mesh, h.human.face_labels))
+    if(c.first_label == first && c.second_label == second) {
+      const int click = central_cut_vertex(h.human.mesh, c.vertices);
+      const Joint_cutting_result r = cut_at_vertices(h.human.mesh, {click}, Joint_cutting_options(), name + ".off");
+      if(r.cuts.size() != 1u) return HUGE_VAL;
+      return cut_distance(h.human.mesh, r.cuts[0].path, c.vertices) / h.diagonal;
+    }
+  ADD_FAILURE() << name << " has no cut between labels " << first << " and " << second;
+  return HUGE_VAL;
 }
 
 // A click where a short leg piece of ant_97 meets the thorax (labels 8 and
@@ -291,18 +311,24 @@ TEST(Joint_cutting, CutsFollowTheCreasePeopleCutAlong)
 // of the diagonal away. The best fitting thinner limb is tried too.
 TEST(Joint_cutting, AClickAtALegsBaseCutsTheLegNotTheBody)
 {
-  Human_cuts h;
-  if(!read_human_cuts("ant_97", h))
+  const double d = one_click_distance("ant_97", 8, 20);
+  if(std::isnan(d))
     GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
-  for(const Segmentation_cut& c : segmentation_cuts(h.human.mesh, h.human.face_labels))
-    if(c.first_label == 8 && c.second_label == 20) {
-      const int click = central_cut_vertex(h.human.mesh, c.vertices);
-      const Joint_cutting_result r = cut_at_vertices(h.human.mesh, {click}, Joint_cutting_options(), "ant_97.off");
-      ASSERT_EQ(r.cuts.size(), 1u);
-      EXPECT_LT(cut_distance(h.human.mesh, r.cuts[0].path, c.vertices), 0.01 * h.diagonal) << "click at vertex " << click;
-      return;
-    }
-  FAIL() << "ant_97 has no cut between labels 8 and 20";
+  EXPECT_LT(d, 0.01);
+}
+
+// Where a limb flares into the body, the click lies farther from the limb's
+// axis than the limb's radius allows and the body's axes fit it: ant_97's
+// leg piece 24 at the thorax was cut 7.1% of the diagonal away, around the
+// thorax, and hand_190's finger base (labels 0 and 7) around the palm. The
+// section across the thinner limb near the click is tried too.
+TEST(Joint_cutting, AClickWhereALimbFlaresIntoTheBodyCutsTheLimb)
+{
+  const double leg = one_click_distance("ant_97", 8, 24);
+  if(std::isnan(leg))
+    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+  EXPECT_LT(leg, 0.01);
+  EXPECT_LT(one_click_distance("hand_190", 0, 7), 0.01);
 }
 
 } // namespace

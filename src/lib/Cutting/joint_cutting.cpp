@@ -112,8 +112,16 @@ public:
   {
     const std::size_t again = std::size_t(std::find(clicks_.begin(), clicks_.end(), v) - clicks_.begin());
     if(again < clicks_.size()) same_joint(v, again);
-    const Section through = finder_.find(v);
+    Section through = finder_.find(v);
     Section s = finder_.snapped(v, through, options_.snap_band);
+    // At a limb's flared base the body's section goes around the limb and
+    // its neighbours; snapped, it often finds the limb's crease anyway. The
+    // thinner limb's own section is taken when its snapped loop is cheaper.
+    if(const Section thin = finder_.thinner_limb_section(v, through); !thin.loop.empty())
+      if(Section t = finder_.snapped(v, thin, options_.snap_band); t.weighted < s.weighted) {
+        through = thin;
+        s = std::move(t);
+      }
     Cut_line line = line_of(v, s);
     std::vector<int> path = traced(v, line);
     // Two cuts a ring of faces apart bound a thin ring of a limb, as

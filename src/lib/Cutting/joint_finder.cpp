@@ -78,6 +78,49 @@ Section Joint_finder::find(int v) const
   // It runs into the body or a neighbouring limb: take the narrowest small
   // section moved along the best-fitting limb or tilted, within the search range.
   const Limb_axis& axis = axes.front();
+  best = narrowest_within_range(v, axis);
+  if(best.loop.empty())
+    fail(v, "the section across the limb there is not a small closed loop around the skeleton (the limb's radius "
+            "is " + std::to_string(axis.radius) + "), nor is any section within the search range: click on a "
+            "limb, near its joint");
+  return best;
+}
+
+// Where a limb flares into a thicker body (a finger's base on the palm),
+// the click lies off the limb's own axis and the body's axes fit it
+// better: the section across the limb much thinner than `found`'s whose
+// axis passes within two and a half of its radii of the click, the
+// narrowest small one within the search range.
+Section Joint_finder::thinner_limb_section(int v, const Section& found) const
+{
+  const Vector p = point(v);
+  std::size_t thin = skeleton_edges_.size();
+  double best_misfit = 1.5;
+  for(std::size_t e = 0; e < skeleton_edges_.size(); ++e) {
+    const double r = edge_radius_[e];
+    if(!(r > 0) || r >= 0.6 * found.axis.radius) continue;
+    const auto [a, b] = skeleton_edges_[e];
+    const double misfit =
+      std::abs(distance_to_segment(p, skeleton_.points[std::size_t(a)], skeleton_.points[std::size_t(b)]) - r) / r;
+    if(misfit < best_misfit) best_misfit = misfit, thin = e;
+  }
+  Section best;
+  if(thin == skeleton_edges_.size()) return best;
+  const Limb_axis axis = edge_axis(thin, p);
+  if(!axis.direction.allFinite()) return best;
+  // None when `found` already is a small loop around that limb.
+  const Vector centre = axis.point + (found.centre - axis.point).dot(axis.direction) * axis.direction;
+  double spread = 0.;
+  for(int u : found.loop) spread = std::max(spread, (point(u) - centre).norm());
+  if((found.centre - centre).norm() <= axis.radius && spread <= 3. * axis.radius) return best;
+  return narrowest_within_range(v, axis);
+}
+
+// The narrowest small section across `axis` with its plane moved along it
+// from `v` or tilted, within the search range; an empty loop if none.
+Section Joint_finder::narrowest_within_range(int v, const Limb_axis& axis) const
+{
+  Section best;
   const std::vector<Vector> normals = tilted(axis.direction, {20., 40.});
   const int steps = 4;
   for(int k = -steps; k <= steps && options_.search_range > 0; ++k)
@@ -85,10 +128,6 @@ Section Joint_finder::find(int v) const
       const Section s = section(v, axis, options_.search_range * axis.radius * k / steps, n, false);
       if(acceptable(s) && (best.loop.empty() || s.weighted < best.weighted)) best = s;
     }
-  if(best.loop.empty())
-    fail(v, "the section across the limb there is not a small closed loop around the skeleton (the limb's radius "
-            "is " + std::to_string(axis.radius) + "), nor is any section within the search range: click on a "
-            "limb, near its joint");
   return best;
 }
 

@@ -68,6 +68,12 @@ public:
   // is one, else the loop centred nearest the axis.
   Section section(int v, const Limb_axis& axis, double t, const Vector& normal, bool through_click) const;
 
+  // Where a limb flares into a thicker body (a finger's base on the palm),
+  // the click lies off the limb's own axis and the body fits it better: the
+  // narrowest small section across the limb much thinner than `found`'s that
+  // passes near `v`, within the search range. Empty loop: none.
+  Section thinner_limb_section(int v, const Section& found) const;
+
   // A small closed loop around its limb's axis, with enough vertices.
   bool acceptable(const Section& s) const;
 
@@ -93,6 +99,7 @@ private:
   void check_closed_and_connected() const;
   Vector point(int v) const { return m_.points.row(v).transpose(); }
   std::vector<Limb_axis> limb_axes(int v) const;
+  Section narrowest_within_range(int v, const Limb_axis& axis) const;
   void measure_skeleton_edges();
   std::vector<char> nodes_within(int node, int hops) const;
   Vector walk(int from, int previous, double length) const;
