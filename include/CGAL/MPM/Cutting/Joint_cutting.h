@@ -94,7 +94,11 @@ struct Joint_cutting_result
 /// traced as the feature-weighted geodesic loop of `cut_mesh()` through
 /// `Joint_cutting_options::anchors` of its vertices, the clicked vertex
 /// first. A snapped loop of fewer than `minimum_section_vertices` vertices
-/// is not taken. When a click's snapped cut runs along or crosses a cut
+/// is not taken. Where a limb flares into a thicker body (the click lies
+/// within 2.5 radii of the axis of a limb thinner than 0.6 times the
+/// section's radius, and the section is not a small loop around that limb),
+/// the narrowest section across the thinner limb within the search range is
+/// snapped too, and the cheaper of the two snapped loops is the cut. When a click's snapped cut runs along or crosses a cut
 /// already made (both clicks snapped to one crease), the section through
 /// the click is taken instead if it goes around the same limb: two cuts a
 /// ring of faces apart bound a thin ring, as people cut where an arm leaves
