@@ -97,23 +97,32 @@ Section Joint_finder::thinner_limb_section(int v, const Section& found) const
   std::size_t thin = skeleton_edges_.size();
   double best_misfit = 1.5;
   for(std::size_t e = 0; e < skeleton_edges_.size(); ++e) {
-    const double r = edge_radius_[e];
-    if(!(r > 0) || r >= 0.6 * found.axis.radius) continue;
-    const auto [a, b] = skeleton_edges_[e];
-    const double misfit =
-      std::abs(distance_to_segment(p, skeleton_.points[std::size_t(a)], skeleton_.points[std::size_t(b)]) - r) / r;
-    if(misfit < best_misfit) best_misfit = misfit, thin = e;
+    if(!(edge_radius_[e] > 0) || edge_radius_[e] >= 0.6 * found.axis.radius) continue;
+    if(const double misfit = edge_misfit(e, p); misfit < best_misfit) best_misfit = misfit, thin = e;
   }
   Section best;
   if(thin == skeleton_edges_.size()) return best;
   const Limb_axis axis = edge_axis(thin, p);
   if(!axis.direction.allFinite()) return best;
-  // None when `found` already is a small loop around that limb.
+  // None when `found`, measured around that limb's axis, already is a
+  // small loop around it.
+  Section around = found;
+  around.axis = axis;
   const Vector centre = axis.point + (found.centre - axis.point).dot(axis.direction) * axis.direction;
-  double spread = 0.;
-  for(int u : found.loop) spread = std::max(spread, (point(u) - centre).norm());
-  if((found.centre - centre).norm() <= axis.radius && spread <= 3. * axis.radius) return best;
+  around.off_axis = (found.centre - centre).norm();
+  around.spread = 0.;
+  for(int u : found.loop) around.spread = std::max(around.spread, (point(u) - centre).norm());
+  if(acceptable(around)) return best;
   return narrowest_within_range(v, axis);
+}
+
+// How far `p` is from lying on the limb surface of skeleton edge `e`: its
+// distance to the edge minus the limb's radius there, relative to that radius.
+double Joint_finder::edge_misfit(std::size_t e, const Vector& p) const
+{
+  const auto [a, b] = skeleton_edges_[e];
+  const double d = distance_to_segment(p, skeleton_.points[std::size_t(a)], skeleton_.points[std::size_t(b)]);
+  return std::abs(d - edge_radius_[e]) / edge_radius_[e];
 }
 
 // The narrowest small section across `axis` with its plane moved along it
@@ -250,8 +259,7 @@ std::vector<Limb_axis> Joint_finder::limb_axes(int v) const
   for(std::size_t e = 0; e < skeleton_edges_.size(); ++e) {
     const auto [a, b] = skeleton_edges_[e];
     if(!near[std::size_t(a)] || !near[std::size_t(b)] || !(edge_radius_[e] > 0)) continue;
-    const double d = distance_to_segment(p, skeleton_.points[std::size_t(a)], skeleton_.points[std::size_t(b)]);
-    const double misfit = std::abs(d - edge_radius_[e]) / edge_radius_[e];
+    const double misfit = edge_misfit(e, p);
     best = std::min(best, misfit);
     if(misfit <= 0.5) fits.emplace_back(misfit, e);
   }

@@ -76,16 +76,16 @@ void write_type_and_seam_maps(const FaceGraph& g,
 }
 
 // Fills the part maps of a mesh `copy_to_face_graph()` made from `mesh`:
-// `face_parts` always, the part type and seam maps when `np` has them.
-template <class FaceGraph, class FacePartMap, class NamedParameters>
+// `face_parts` always, the part type (`type_of(t)` for triangle `t`) and
+// seam maps when `np` has them.
+template <class FaceGraph, class FacePartMap, class TypeOf, class NamedParameters>
 void write_part_maps(const Indexed_mesh& mesh, const FaceGraph& g,
                      const std::vector<typename boost::graph_traits<FaceGraph>::face_descriptor>& added,
-                     const std::vector<int>& face_parts, const std::vector<int>& face_types, FacePartMap parts,
+                     const std::vector<int>& face_parts, const TypeOf& type_of, FacePartMap parts,
                      const NamedParameters& np)
 {
   for(std::size_t t = 0; t < added.size(); ++t) put(parts, added[t], face_parts[t]);
-  write_type_and_seam_maps(
-    g, added, [&](std::size_t t) { return face_types[t]; }, [&] { return seam_vertices(mesh, face_parts); }, np);
+  write_type_and_seam_maps(g, added, type_of, [&] { return seam_vertices(mesh, face_parts); }, np);
 }
 
 } // namespace internal
@@ -111,10 +111,11 @@ void copy_training_example(const Morphable_part_model& model, int example, Mutab
   const Training_example& e = model.examples[std::size_t(example)];
   std::map<int, int> type_of_label;
   for(const Part_node& node : e.graph.nodes) type_of_label[node.label] = node.type;
-  std::vector<int> face_types;
-  face_types.reserve(e.face_labels.size());
-  for(int label : e.face_labels) face_types.push_back(type_of_label.count(label) ? type_of_label[label] : -1);
-  internal::write_part_maps(e.mesh, g, copy_to_face_graph(e.mesh, g, np), e.face_labels, face_types, face_labels, np);
+  const auto type_of = [&](std::size_t t) {
+    const auto it = type_of_label.find(e.face_labels[t]);
+    return it == type_of_label.end() ? -1 : it->second;
+  };
+  internal::write_part_maps(e.mesh, g, copy_to_face_graph(e.mesh, g, np), e.face_labels, type_of, face_labels, np);
 }
 
 /// \ingroup PkgMPMRef
@@ -252,7 +253,9 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& graph, Mu
                   const NamedParameters& np = parameters::default_values())
 {
   Assembly a = assemble(model, graph, options);
-  internal::write_part_maps(a.mesh, g, copy_to_face_graph(a.mesh, g, np), a.face_nodes, a.face_types, face_nodes, np);
+  internal::write_part_maps(
+    a.mesh, g, copy_to_face_graph(a.mesh, g, np), a.face_nodes, [&](std::size_t t) { return a.face_types[t]; },
+    face_nodes, np);
   return a;
 }
 

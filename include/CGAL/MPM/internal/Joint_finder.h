@@ -100,6 +100,7 @@ private:
   Vector point(int v) const { return m_.points.row(v).transpose(); }
   std::vector<Limb_axis> limb_axes(int v) const;
   Section narrowest_within_range(int v, const Limb_axis& axis) const;
+  double edge_misfit(std::size_t e, const Vector& p) const;
   void measure_skeleton_edges();
   std::vector<char> nodes_within(int node, int hops) const;
   Vector walk(int from, int previous, double length) const;
