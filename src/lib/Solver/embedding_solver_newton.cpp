@@ -102,19 +102,24 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
       for(int i = 0; i < 3; ++i) mixed(3 * c + i, m) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
     }
   }
-  // mixed (2 S)^-1 mixed^T, S factored by the global step before (the same
-  // rotations); its column halves in parallel (a third of a 64k-vertex
-  // frame was this product; the 36 real-mesh edits came out the same).
+  // mixed (2 S)^-1 mixed^T = 0.5 Y^T Y with Y = L^-1 mixed^T, S = L L^T
+  // factored by the global step before (the same rotations): one triangular
+  // solve, its column halves in parallel, and a symmetric product (a third
+  // of a 64k-vertex frame was this term as two solves and a full product).
   const Eigen::LLT<Eigen::MatrixXd>& factor = coordinate_factor();
-  const Eigen::Index half = hessian.cols() / 2;
-  const auto schur_term = [&](Eigen::Index first, Eigen::Index count) {
-    hessian.middleCols(first, count) -= 0.5 * mixed * factor.solve(mixed.middleRows(first, count).transpose());
+  Eigen::MatrixXd y = mixed.transpose();
+  const Eigen::Index half = y.cols() / 2;
+  const auto forward = [&](Eigen::Index first, Eigen::Index count) {
+    factor.matrixL().solveInPlace(y.middleCols(first, count));
   };
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_invoke([&] { schur_term(0, half); }, [&] { schur_term(half, hessian.cols() - half); });
+  tbb::parallel_invoke([&] { forward(0, half); }, [&] { forward(half, y.cols() - half); });
 #else
-  schur_term(0, hessian.cols());
+  forward(0, y.cols());
 #endif
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(y.cols(), y.cols());
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(y.transpose(), 0.5);
+  hessian -= Eigen::MatrixXd(gram.selfadjointView<Eigen::Lower>());
   return 0.5 * (hessian + hessian.transpose());
 }
 

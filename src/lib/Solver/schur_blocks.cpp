@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/internal/Schur_blocks.h>
 
+#include <CGAL/MPM/internal/Parallel_for.h>
+
 #include <algorithm>
 
 namespace CGAL {
@@ -112,19 +114,89 @@ void Schur_blocks::update(const std::vector<Cluster_data>& clusters, const Verte
       plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
 }
 
+namespace {
+
+// With Z_c the rows of `z` at cluster c's vertices: (L_c B_ca)^T Z_c for
+// every mode a (3 x columns) and Z_c^T L_c M_c for every cluster c
+// (columns x 3).
+struct Cluster_products
+{
+  std::vector<Eigen::MatrixXd> of_mode, of_mean;
+};
+
+Cluster_products cluster_products(const std::vector<Cluster_data>& clusters, std::size_t modes, const Eigen::MatrixXd& z)
+{
+  Cluster_products p;
+  p.of_mode.resize(modes);
+  p.of_mean.resize(clusters.size());
+  internal::parallel_for_each_index(clusters.size(), [&](std::size_t c) {
+    const Cluster_data& d = clusters[c];
+    const int m = d.number_of_modes();
+    // One product for all the cluster's operands [L B_c1 .. L B_cm L M_c].
+    Eigen::MatrixXd operands(Eigen::Index(d.vertices.size()), 3 * (m + 1));
+    for(int k = 0; k < m; ++k) operands.middleCols<3>(3 * k) = d.laplacian_modes[std::size_t(k)];
+    operands.rightCols<3>() = d.laplacian_mean;
+    const Eigen::MatrixXd product = operands.transpose() * gather(d, z);
+    for(int k = 0; k < m; ++k) p.of_mode[std::size_t(d.offset + k)] = product.middleRows<3>(3 * k);
+    p.of_mean[c] = product.bottomRows<3>().transpose();
+  });
+  return p;
+}
+
+} // namespace
+
 void Schur_blocks::set_handle_terms(const std::vector<Cluster_data>& clusters, const Point_matrix& b0,
                                     const Eigen::MatrixXd& z)
 {
   b0_z = (b0.array() * z.array()).sum();
-  z_blocks.assign(std::size_t(mode_gram.rows()), Eigen::Matrix3d::Zero());
-  zlm_blocks.assign(clusters.size(), Eigen::Matrix3d::Zero());
-  for(const Cluster_data& c : clusters)
+  const Cluster_products p = cluster_products(clusters, std::size_t(mode_gram.rows()), z);
+  z_blocks.assign(p.of_mode.begin(), p.of_mode.end());
+  zlm_blocks.assign(p.of_mean.begin(), p.of_mean.end());
+}
+
+void Schur_blocks::set_handle_basis(const std::vector<Cluster_data>& clusters, const Point_matrix& anchor_rhs,
+                                    const Point_matrix& anchor_solution, const std::vector<int>& handles,
+                                    const Eigen::MatrixXd& handle_columns)
+{
+  const Eigen::Index k = handle_columns.cols();
+  Eigen::MatrixXd z(anchor_solution.rows(), 3 + k);
+  z << anchor_solution, handle_columns;
+  const Cluster_products p = cluster_products(clusters, std::size_t(mode_gram.rows()), z);
+  Handle_basis& b = handle_basis;
+  b.z_fixed.resize(p.of_mode.size());
+  b.z_linear.resize(p.of_mode.size());
+  for(std::size_t a = 0; a < p.of_mode.size(); ++a)
   {
-    const Eigen::MatrixXd local = gather(c, z);
-    zlm_blocks[&c - clusters.data()] = local.transpose() * c.laplacian_mean;
-    for(int k = 0; k < c.number_of_modes(); ++k)
-      z_blocks[c.offset + k] = c.laplacian_modes[k].transpose() * local;
+    b.z_fixed[a] = p.of_mode[a].leftCols<3>();
+    b.z_linear[a] = p.of_mode[a].rightCols(k);
   }
+  b.zlm_fixed.resize(p.of_mean.size());
+  b.zlm_linear.resize(p.of_mean.size());
+  for(std::size_t c = 0; c < p.of_mean.size(); ++c)
+  {
+    b.zlm_fixed[c] = p.of_mean[c].topRows<3>();
+    b.zlm_linear[c] = p.of_mean[c].bottomRows(k);
+  }
+  // <a + S T, z_a + H T> = <a, z_a> + <H^T a + S^T z_a, T> + <T, S^T H T>.
+  b.b_fixed = (anchor_rhs.array() * anchor_solution.array()).sum();
+  b.b_linear = handle_columns.transpose() * anchor_rhs;
+  b.b_quadratic.resize(k, k);
+  for(Eigen::Index h = 0; h < k; ++h)
+  {
+    b.b_linear.row(h) += anchor_solution.row(handles[std::size_t(h)]);
+    b.b_quadratic.row(h) = handle_columns.row(handles[std::size_t(h)]);
+  }
+}
+
+void Schur_blocks::set_handle_targets(const Eigen::MatrixXd& weighted_targets)
+{
+  const Handle_basis& b = handle_basis;
+  const Eigen::MatrixXd& t = weighted_targets;
+  b0_z = b.b_fixed + (b.b_linear.array() * t.array()).sum() + (t.array() * (b.b_quadratic * t).array()).sum();
+  z_blocks.resize(b.z_fixed.size());
+  for(std::size_t a = 0; a < b.z_fixed.size(); ++a) z_blocks[a] = b.z_fixed[a] + b.z_linear[a] * t;
+  zlm_blocks.resize(b.zlm_fixed.size());
+  for(std::size_t c = 0; c < b.zlm_fixed.size(); ++c) zlm_blocks[c] = b.zlm_fixed[c] + t.transpose() * b.zlm_linear[c];
 }
 
 } // namespace embedding

@@ -110,10 +110,7 @@ struct Embedding_solver::Impl
   Eigen::MatrixXd coupling;       // coupled-coordinates term, total_modes x total_modes
   double handle_constant = 0.;    // sum w_h |y_h|^2 + anchors
   Point_matrix b0;                // handle and anchor right-hand side
-  // A11^-1 of each handle's unit right-hand side and of the anchors' part of
-  // b0, for the handle set `handle_columns_for` (handle_solution()).
-  Eigen::MatrixXd handle_columns;
-  Point_matrix anchor_solution;
+  // The handle set of the blocks' handle basis (set_block_handle_terms()).
   std::vector<int> handle_columns_for;
   bool handle_columns_valid = false;
   std::vector<int> cluster_of_mode;
@@ -142,7 +139,7 @@ struct Embedding_solver::Impl
   void factor();
   bool update_handle_set(const std::vector<int>& vertices);
   Point_matrix anchor_right_hand_side() const;
-  Eigen::MatrixXd handle_solution();
+  void set_block_handle_terms();
   void prepare_handle_terms();
   Point_matrix target_shape(const Cluster_data& c, const Eigen::VectorXd& lambda) const;
   void local_step();

@@ -26,8 +26,20 @@ struct Schur_blocks
              const Eigen::MatrixXd& coupling, const Vertex_block& block);
   /// The blocks of `block` with its current update.
   void update(const std::vector<Cluster_data>& clusters, const Vertex_block& block);
-  /// The handle terms, from the right-hand side `b0` and `z = A11^-1 b0`.
+  /// The handle terms, from the right-hand side `b0` and `z = A11^-1 b0`
+  /// (the reference; one pass over the vertices).
   void set_handle_terms(const std::vector<Cluster_data>& clusters, const Point_matrix& b0, const Eigen::MatrixXd& z);
+  /// The handle terms as affine functions of the weighted handle targets `T`
+  /// (k x 3), for one handle set: `b0 = a + S T` with `S` putting row `h` at
+  /// vertex `handles[h]`, and `z = A11^-1 a + H T` (`anchor_solution`,
+  /// `handle_columns`). A drag then sets its targets with
+  /// `set_handle_targets()` without touching the vertices.
+  void set_handle_basis(const std::vector<Cluster_data>& clusters, const Point_matrix& anchor_rhs,
+                        const Point_matrix& anchor_solution, const std::vector<int>& handles,
+                        const Eigen::MatrixXd& handle_columns);
+  /// The handle terms of `set_handle_terms()` at the weighted targets `T`,
+  /// from the basis of the last `set_handle_basis()`.
+  void set_handle_targets(const Eigen::MatrixXd& weighted_targets);
 
   // H[ck][dl] = (L_c B_ck)^T Q_dl, G[ck][d] = (L_c B_ck)^T P_d, Gz[ck] = (L_c B_ck)^T Z,
   // with Q = A11^-1 L B, P = A11^-1 L M, Z = A11^-1 b0.
@@ -48,6 +60,16 @@ private:
 
   // The blocks of the factored block, which an update corrects.
   std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base;
+
+  // z_blocks[a] = z_fixed[a] + z_linear[a] T, zlm_blocks[c] = zlm_fixed[c] +
+  // T^T zlm_linear[c], b0_z = b_fixed + <b_linear, T> + <T, b_quadratic T>.
+  struct Handle_basis
+  {
+    std::vector<Eigen::Matrix3d> z_fixed, zlm_fixed;
+    std::vector<Eigen::MatrixXd> z_linear, zlm_linear; // 3 x k, k x 3
+    double b_fixed = 0.;
+    Eigen::MatrixXd b_linear, b_quadratic;             // k x 3, k x k
+  } handle_basis;
 };
 
 } // namespace embedding
