@@ -40,24 +40,30 @@ Eigen::SparseMatrix<double> vertex_block_like(int vertices)
 } // namespace
 
 // One pass over the factor for all columns gives what Eigen's column by
-// column solve gives (the same operations in the same order per column),
-// for one, three (a displayed frame), a few (groups of every width the
-// solve unrolls) and many columns (the set-up's batches, cut into groups
-// solved in parallel).
-TEST(Ldlt_row_solve, agrees_with_eigens_solve)
+// column solve gives (the same operations per column, up to the order in
+// which a part's updates of the tree's top add up), for one, three (a
+// displayed frame), a few (groups of every width the solve unrolls) and
+// many columns (the set-up's batches, cut into groups solved in parallel),
+// with the elimination tree whole or split into two or three parts.
+TEST(Ldlt_row_solver, agrees_with_eigens_solve)
 {
   const Eigen::SparseMatrix<double> a = vertex_block_like(3000);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
   ASSERT_EQ(ldlt.info(), Eigen::Success);
-  for(const Eigen::Index columns : {1, 2, 3, 7, 50})
+  for(const int parts : {1, 2, 3})
   {
-    const Eigen::MatrixXd b = Eigen::MatrixXd::Random(a.rows(), columns);
-    const Eigen::MatrixXd reference = ldlt.solve(b);
-    const Eigen::MatrixXd rows = internal::ldlt_solve_rows(ldlt, b);
-    ASSERT_EQ(rows.rows(), reference.rows());
-    ASSERT_EQ(rows.cols(), reference.cols());
-    EXPECT_LE((rows - reference).norm(), 1e-13 * reference.norm()) << columns << " columns";
-    EXPECT_LT((a * rows - b).norm(), 1e-8 * b.norm()) << columns << " columns";
+    const internal::Ldlt_row_solver solver(ldlt, parts);
+    EXPECT_EQ(solver.number_of_parts(), parts);
+    for(const Eigen::Index columns : {1, 2, 3, 7, 50})
+    {
+      const Eigen::MatrixXd b = Eigen::MatrixXd::Random(a.rows(), columns);
+      const Eigen::MatrixXd reference = ldlt.solve(b);
+      const Eigen::MatrixXd rows = solver.solve(b);
+      ASSERT_EQ(rows.rows(), reference.rows());
+      ASSERT_EQ(rows.cols(), reference.cols());
+      EXPECT_LE((rows - reference).norm(), 1e-13 * reference.norm()) << columns << " columns, " << parts << " parts";
+      EXPECT_LT((a * rows - b).norm(), 1e-8 * b.norm()) << columns << " columns, " << parts << " parts";
+    }
   }
 }
 

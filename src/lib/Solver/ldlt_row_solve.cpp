@@ -8,6 +8,9 @@
 #endif
 
 #include <algorithm>
+#include <functional>
+#include <queue>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -18,114 +21,242 @@ namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
 
-// Columns `first` .. `first + count` of `b` solved into the same columns
-// of `x`, as Eigen's solve does it: x = P^-1 L^-T D^-1 L^-1 P b, the
-// strictly lower `L` stored by columns (unit diagonal implied). `Width`
-// is `count` when it is known at compile time (0 otherwise, at most
-// `max_width`): the few multiply-adds per entry of `L` are then unrolled,
-// which made a 64k-vertex back-substitution of three columns 2.5 times
-// faster.
 constexpr Eigen::Index max_width = 24;
 
+template <class Body>
+void for_each_part(std::size_t count, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(count > 1)
+  {
+    tbb::parallel_for(std::size_t(0), count, body);
+    return;
+  }
+#endif
+  for(std::size_t i = 0; i < count; ++i) body(i);
+}
+
+// The strictly lower `L` (unit diagonal implied) and `D`, read as Eigen's
+// solve reads them: x = P^-1 L^-T D^-1 L^-1 P b.
+struct Factor_view
+{
+  const int* outer;
+  const int* inner;
+  const double* values;
+  const double* d;
+  // The first entry of column j below the diagonal (entries on or above it
+  // are skipped, as Eigen's solve skips them).
+  int below(Eigen::Index j) const
+  {
+    int p = outer[j];
+    while(p < outer[j + 1] && inner[p] <= j) ++p;
+    return p;
+  }
+};
+
+// Columns `first` .. `first + count` of `b` solved into the same columns of
+// `x`, the rows of a vertex side by side. `Width` is `count` when it is
+// known at compile time (0 otherwise, at most `max_width`): the few
+// multiply-adds per entry of `L` are then unrolled, which made a 64k-vertex
+// back-substitution of three columns 2.5 times faster. The parts of
+// `partition` run in parallel: each writes its own rows, and its updates of
+// the top's rows go to a buffer of its own, added up before the top.
 template <int Width>
-void solve_columns(const Eigen::SimplicialLDLT<Sparse>& ldlt, const Eigen::MatrixXd& b, Eigen::Index first,
+void solve_columns(const Factor_view& l, const Eigen::PermutationMatrix<Eigen::Dynamic>& p,
+                   const Eigen::PermutationMatrix<Eigen::Dynamic>& p_inverse,
+                   const Ldlt_row_solver::Partition& partition, const Eigen::MatrixXd& b, Eigen::Index first,
                    Eigen::Index count, Eigen::MatrixXd& x)
 {
   const Eigen::Index n = b.rows(), w = Width > 0 ? Width : count;
-  const Sparse& factor = ldlt.matrixL().nestedExpression();
-  Sparse compressed;
-  if(!factor.isCompressed()) compressed = factor, compressed.makeCompressed();
-  const Sparse& l = factor.isCompressed() ? factor : compressed;
-  const Eigen::VectorXd& d = ldlt.vectorD();
-  const bool permuted = ldlt.permutationP().size() > 0;
+  const bool permuted = p.size() > 0;
   std::vector<double> y(std::size_t(n * w));
   double* const rows = y.data();
   for(Eigen::Index i = 0; i < n; ++i)
   {
-    double* const yi = rows + (permuted ? ldlt.permutationP().indices()[i] : i) * w;
+    double* const yi = rows + (permuted ? p.indices()[i] : i) * w;
     for(Eigen::Index k = 0; k < w; ++k) yi[k] = b(i, first + k);
   }
-  const int* const outer = l.outerIndexPtr();
-  const int* const inner = l.innerIndexPtr();
-  const double* const values = l.valuePtr();
-  // Entries on or above the diagonal are skipped, as Eigen's solve skips them.
-  const auto below = [&](Eigen::Index j) {
-    int p = outer[j];
-    while(p < outer[j + 1] && inner[p] <= j) ++p;
-    return p;
+  const std::vector<int>& top = partition.top;
+  const int* const slot = partition.top_slot.data();
+  std::vector<std::vector<double>> top_updates(partition.parts.size());
+  const auto forward = [&](std::size_t part) {
+    std::vector<double>& buffer = top_updates[part];
+    buffer.assign(top.size() * std::size_t(w), 0.);
+    double yj[Width > 0 ? Width : max_width];
+    for(int j : partition.parts[part])
+    {
+      for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k];
+      for(int q = l.below(j); q < l.outer[j + 1]; ++q)
+      {
+        const int i = l.inner[q];
+        double* const yi = slot[i] < 0 ? rows + Eigen::Index(i) * w : buffer.data() + Eigen::Index(slot[i]) * w;
+        const double v = l.values[q];
+        for(Eigen::Index k = 0; k < w; ++k) yi[k] -= v * yj[k];
+      }
+    }
   };
+  for_each_part(partition.parts.size(), forward);
+  for(const std::vector<double>& buffer : top_updates)
+    for(std::size_t t = 0; t < top.size(); ++t)
+      for(Eigen::Index k = 0; k < w; ++k) rows[top[t] * w + k] += buffer[t * std::size_t(w) + std::size_t(k)];
   double yj[Width > 0 ? Width : max_width];
-  for(Eigen::Index j = 0; j < n; ++j)
+  for(int j : top)
   {
     for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k];
-    for(int p = below(j); p < outer[j + 1]; ++p)
+    for(int q = l.below(j); q < l.outer[j + 1]; ++q)
     {
-      double* const yi = rows + Eigen::Index(inner[p]) * w;
-      const double v = values[p];
-      for(Eigen::Index k = 0; k < w; ++k) yi[k] -= v * yj[k];
+      double* const yi = rows + Eigen::Index(l.inner[q]) * w;
+      for(Eigen::Index k = 0; k < w; ++k) yi[k] -= l.values[q] * yj[k];
     }
   }
   for(Eigen::Index j = 0; j < n; ++j)
   {
-    const double inverse = 1. / d[j];
+    const double inverse = 1. / l.d[j];
     for(Eigen::Index k = 0; k < w; ++k) rows[j * w + k] *= inverse;
   }
-  for(Eigen::Index j = n - 1; j >= 0; --j)
-  {
+  const auto backward = [&](int j) {
+    double yj[Width > 0 ? Width : max_width];
     for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k];
-    for(int p = below(j); p < outer[j + 1]; ++p)
+    for(int q = l.below(j); q < l.outer[j + 1]; ++q)
     {
-      const double* const yi = rows + Eigen::Index(inner[p]) * w;
-      const double v = values[p];
-      for(Eigen::Index k = 0; k < w; ++k) yj[k] -= v * yi[k];
+      const double* const yi = rows + Eigen::Index(l.inner[q]) * w;
+      for(Eigen::Index k = 0; k < w; ++k) yj[k] -= l.values[q] * yi[k];
     }
     for(Eigen::Index k = 0; k < w; ++k) rows[j * w + k] = yj[k];
-  }
+  };
+  std::for_each(top.rbegin(), top.rend(), backward);
+  for_each_part(partition.parts.size(), [&](std::size_t part) {
+    std::for_each(partition.parts[part].rbegin(), partition.parts[part].rend(), backward);
+  });
   for(Eigen::Index i = 0; i < n; ++i)
   {
     const double* const yi = rows + i * w;
-    const Eigen::Index row = permuted ? ldlt.permutationPinv().indices()[i] : i;
+    const Eigen::Index row = permuted ? p_inverse.indices()[i] : i;
     for(Eigen::Index k = 0; k < w; ++k) x(row, first + k) = yi[k];
   }
 }
 
-void solve_columns(const Eigen::SimplicialLDLT<Sparse>& ldlt, const Eigen::MatrixXd& b, Eigen::Index first,
-                   Eigen::Index count, Eigen::MatrixXd& x)
+// The elimination tree of `L` split into `count` sets of independent
+// subtrees of about equal work (entries of `L`), by expanding the heaviest
+// subtree into its children until no subtree holds more than a tenth of the
+// rest; the expanded nodes are the top. Stops with fewer parts when the top
+// would grow beyond a fifth of the work.
+Ldlt_row_solver::Partition split_tree(const Factor_view& l, int n, int count)
 {
-  switch(count)
+  std::vector<int> parent(std::size_t(n), -1);
+  std::vector<long> work(std::size_t(n), 1);
+  std::vector<std::vector<int>> children{std::size_t(n)};
+  for(int j = 0; j < n; ++j)
   {
-  case 1: return solve_columns<1>(ldlt, b, first, count, x);
-  case 2: return solve_columns<2>(ldlt, b, first, count, x);
-  case 3: return solve_columns<3>(ldlt, b, first, count, x);
-  default: return solve_columns<0>(ldlt, b, first, count, x);
+    const int q = l.below(j);
+    work[std::size_t(j)] += l.outer[j + 1] - q;
+    for(int r = q; r < l.outer[j + 1]; ++r)
+      if(parent[std::size_t(j)] < 0 || l.inner[r] < parent[std::size_t(j)]) parent[std::size_t(j)] = l.inner[r];
   }
+  std::vector<long> subtree = work;
+  for(int j = 0; j < n; ++j)
+    if(parent[std::size_t(j)] >= 0)
+    {
+      subtree[std::size_t(parent[std::size_t(j)])] += subtree[std::size_t(j)];
+      children[std::size_t(parent[std::size_t(j)])].push_back(j);
+    }
+  const auto lighter = [&](int a, int b) { return subtree[std::size_t(a)] < subtree[std::size_t(b)]; };
+  std::priority_queue<int, std::vector<int>, decltype(lighter)> frontier(lighter);
+  long frontier_work = 0, top_work = 0;
+  for(int j = 0; j < n; ++j)
+    if(parent[std::size_t(j)] < 0)
+    {
+      frontier.push(j);
+      frontier_work += subtree[std::size_t(j)];
+    }
+  Ldlt_row_solver::Partition partition;
+  while(!frontier.empty() && 10 * subtree[std::size_t(frontier.top())] > frontier_work && 5 * top_work < frontier_work)
+  {
+    const int j = frontier.top();
+    frontier.pop();
+    partition.top.push_back(j);
+    top_work += work[std::size_t(j)];
+    frontier_work -= subtree[std::size_t(j)];
+    for(int c : children[std::size_t(j)])
+    {
+      frontier.push(c);
+      frontier_work += subtree[std::size_t(c)];
+    }
+  }
+  // Heaviest subtree first into the lightest part.
+  std::vector<long> part_work(std::size_t(count), 0);
+  partition.parts.assign(std::size_t(count), {});
+  for(; !frontier.empty(); frontier.pop())
+  {
+    const std::size_t part = std::size_t(std::min_element(part_work.begin(), part_work.end()) - part_work.begin());
+    part_work[part] += subtree[std::size_t(frontier.top())];
+    std::vector<int> pending{frontier.top()};
+    while(!pending.empty())
+    {
+      const int j = pending.back();
+      pending.pop_back();
+      partition.parts[part].push_back(j);
+      pending.insert(pending.end(), children[std::size_t(j)].begin(), children[std::size_t(j)].end());
+    }
+  }
+  partition.parts.erase(std::remove_if(partition.parts.begin(), partition.parts.end(),
+                                       [](const std::vector<int>& part) { return part.empty(); }),
+                        partition.parts.end());
+  for(std::vector<int>& part : partition.parts) std::sort(part.begin(), part.end());
+  std::sort(partition.top.begin(), partition.top.end());
+  partition.top_slot.assign(std::size_t(n), -1);
+  for(std::size_t t = 0; t < partition.top.size(); ++t) partition.top_slot[std::size_t(partition.top[t])] = int(t);
+  return partition;
 }
 
 } // namespace
 
-Eigen::MatrixXd ldlt_solve_rows(const Eigen::SimplicialLDLT<Sparse>& ldlt, const Eigen::MatrixXd& b)
+Ldlt_row_solver::Ldlt_row_solver(const Eigen::SimplicialLDLT<Sparse>& ldlt, int parts)
+  : ldlt_(&ldlt)
 {
+  const Sparse& factor = ldlt.matrixL().nestedExpression();
+  if(!factor.isCompressed()) compressed_ = factor, compressed_.makeCompressed();
+  const Sparse& l = factor.isCompressed() ? factor : compressed_;
+  const int n = static_cast<int>(l.rows());
+  d_ = ldlt.vectorD();
+  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data()};
+  whole_.parts.assign(1, std::vector<int>(std::size_t(n)));
+  for(int j = 0; j < n; ++j) whole_.parts[0][std::size_t(j)] = j;
+  whole_.top_slot.assign(std::size_t(n), -1);
+  split_ = parts > 1 ? split_tree(view, n, parts) : whole_;
+}
+
+Eigen::MatrixXd Ldlt_row_solver::solve(const Eigen::MatrixXd& b) const
+{
+  const Sparse& factor = ldlt_->matrixL().nestedExpression();
+  const Sparse& l = factor.isCompressed() ? factor : compressed_;
+  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data()};
   Eigen::MatrixXd x(b.rows(), b.cols());
-  // Groups of at most 24 columns (rows of a group stay in cache lines), and
-  // at least one per core: three columns on two cores are two passes, one
-  // of two columns and one of one.
+  // Groups of at most 24 columns (rows of a group stay in cache lines), at
+  // least one per core when each gets 6 columns or more; fewer columns go
+  // through the tree's parts in parallel instead (measured on the 64k
+  // spider: 3 columns 5.0 ms against 6.7 ms as groups of 2 and 1, 19
+  // columns 29.8 ms against 22.6 ms as groups of 10 and 9).
   Eigen::Index groups = (b.cols() + max_width - 1) / max_width;
 #ifdef CGAL_LINKED_WITH_TBB
-  groups = std::max<Eigen::Index>(groups, std::min<Eigen::Index>(b.cols(), tbb::this_task_arena::max_concurrency()));
+  const Eigen::Index cores = tbb::this_task_arena::max_concurrency();
+  if(b.cols() >= 6 * cores) groups = std::max(groups, cores);
 #endif
+  const Partition& partition = groups > 1 ? whole_ : split_;
   const Eigen::Index width = groups > 0 ? (b.cols() + groups - 1) / groups : 0;
-  const auto solve_group = [&](Eigen::Index g) {
-    const Eigen::Index first = g * width;
-    if(first < b.cols()) solve_columns(ldlt, b, first, std::min(width, b.cols() - first), x);
+  const auto solve_group = [&](std::size_t g) {
+    const Eigen::Index first = Eigen::Index(g) * width, count = std::min(width, b.cols() - first);
+    const auto& p = ldlt_->permutationP();
+    const auto& p_inverse = ldlt_->permutationPinv();
+    switch(count)
+    {
+    case 1: return solve_columns<1>(view, p, p_inverse, partition, b, first, count, x);
+    case 2: return solve_columns<2>(view, p, p_inverse, partition, b, first, count, x);
+    case 3: return solve_columns<3>(view, p, p_inverse, partition, b, first, count, x);
+    default: return solve_columns<0>(view, p, p_inverse, partition, b, first, count, x);
+    }
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(groups > 1 && b.rows() > 5000)
-  {
-    tbb::parallel_for(Eigen::Index(0), groups, solve_group);
-    return x;
-  }
-#endif
-  for(Eigen::Index g = 0; g < groups; ++g) solve_group(g);
+  for_each_part(std::size_t(groups), solve_group);
   return x;
 }
 

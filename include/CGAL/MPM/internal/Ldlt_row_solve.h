@@ -6,6 +6,8 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include <vector>
+
 namespace CGAL {
 namespace MPM {
 namespace internal {
@@ -14,10 +16,42 @@ namespace internal {
 // same, `ldlt.solve(b)`, the reference), with every column of `b` carried
 // through one pass over the factor. The triangular solves of a large mesh
 // are bound by reading `L`, which the column-by-column solve reads once per
-// column: a displayed frame back-substitutes three. Wide right-hand sides
-// are cut into column groups, and three columns into one group per core,
-// solved in parallel (TBB).
-Eigen::MatrixXd ldlt_solve_rows(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt, const Eigen::MatrixXd& b);
+// column: a displayed frame back-substitutes three.
+//
+// Wide right-hand sides are cut into column groups solved in parallel
+// (TBB). Narrow ones (a frame's three columns) are solved in parallel over
+// the elimination tree instead: independent subtrees of about equal work,
+// one set per core, then their common ancestors (the top of the tree). Cut
+// by columns, three columns on two cores were a pass of two beside a pass
+// of one.
+class Ldlt_row_solver
+{
+public:
+  /// Keeps a reference to `ldlt`, which must outlive the solver and not be
+  /// refactored; splits its elimination tree into `parts` (1: no split).
+  Ldlt_row_solver(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt, int parts);
+  /// `A^-1 b`.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
+  /// The parts the tree was split into (fewer than asked when it has no
+  /// independent subtrees of about equal work).
+  int number_of_parts() const { return static_cast<int>(split_.parts.size()); }
+
+  // The columns of `L` a pass visits: independent subtrees, their columns
+  // in increasing order per part, and the common ancestors (`top`), with
+  // each row's index in `top` (-1 outside it).
+  struct Partition
+  {
+    std::vector<std::vector<int>> parts;
+    std::vector<int> top;
+    std::vector<int> top_slot;
+  };
+
+private:
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* ldlt_;
+  Eigen::SparseMatrix<double> compressed_; // when Eigen's factor is not compressed
+  Eigen::VectorXd d_;                      // Eigen hands D out by value
+  Partition whole_, split_; // one part without a top; the tree's split
+};
 
 } // namespace internal
 } // namespace MPM

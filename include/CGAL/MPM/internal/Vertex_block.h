@@ -15,6 +15,7 @@
 #include <Eigen/SparseCore>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <memory>
@@ -104,7 +105,15 @@ public:
     typename SolverTraits::NT determinant;
     if(!traits_.factor(*matrix_, determinant)) return false;
     if constexpr(std::is_same_v<typename SolverTraits::Solver, Eigen::SimplicialLDLT<Sparse>>)
+    {
+      // Below a few thousand rows a pass is too short to share between cores.
+      int parts = 1;
+#ifdef CGAL_LINKED_WITH_TBB
+      if(system_.rows() > 5000) parts = tbb::this_task_arena::max_concurrency();
+#endif
+      row_solver_ = std::make_unique<Ldlt_row_solver>(traits_.solver(), parts);
       return (weakest_ = non_positive_pivot_row(traits_.solver())) < 0;
+    }
     return true;
   }
 
@@ -153,11 +162,11 @@ public:
 
   // Columns are independent triangular solves: on large meshes they run in
   // parallel, which is most of the cost of a displayed frame. An LDLT factor
-  // carries all columns through one pass over it (`ldlt_solve_rows()`).
+  // carries all columns through one pass over it (`Ldlt_row_solver`).
   Eigen::MatrixXd solve_factored(const Eigen::MatrixXd& b) const override
   {
     if constexpr(std::is_same_v<typename SolverTraits::Solver, Eigen::SimplicialLDLT<Sparse>>)
-      return ldlt_solve_rows(traits_.solver(), b);
+      return row_solver_->solve(b);
 #ifdef CGAL_LINKED_WITH_TBB
     if(b.rows() > 20000 && b.cols() > 1)
     {
@@ -189,6 +198,7 @@ private:
   // The traits hand out their solver by non-const reference only.
   mutable SolverTraits traits_;
   std::unique_ptr<typename SolverTraits::Matrix> matrix_;
+  std::unique_ptr<Ldlt_row_solver> row_solver_; // with an LDLT factor
   Sparse system_;
   Eigen::VectorXd diagonal_;
   int weakest_ = -1;
