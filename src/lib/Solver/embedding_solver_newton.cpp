@@ -87,10 +87,15 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
   for(int m = 0; m < dm; ++m)
   {
     const int own = cluster_of_mode[m];
+    // One product per cluster d: sum_k lambda_k R_d h_km over d's modes k.
     Eigen::Matrix3d in_own = schur.z_blocks[m].transpose();
-    for(int d = 0; d < nc; ++d) in_own += rotations[d] * schur.qlm_blocks[std::size_t(m) * nc + d].transpose();
-    for(int k = 0; k < dm; ++k)
-      in_own += coordinates[k] * rotations[cluster_of_mode[k]] * schur.h_blocks[std::size_t(k) * dm + m];
+    for(int d = 0; d < nc; ++d)
+    {
+      Eigen::Matrix3d sum = schur.qlm_blocks[std::size_t(m) * nc + d].transpose();
+      for(int k = clusters[d].offset; k < clusters[d].offset + clusters[d].number_of_modes(); ++k)
+        sum += coordinates[k] * schur.h_blocks[std::size_t(k) * dm + m];
+      in_own += rotations[d] * sum;
+    }
     for(int c = 0; c < nc; ++c)
     {
       const Cluster_data& cc = clusters[c];
