@@ -2,15 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/internal/Ldlt_row_solve.h>
 
+#include <CGAL/MPM/internal/Parallel_for.h>
+
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
-#include <functional>
 #include <queue>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -22,19 +21,6 @@ namespace {
 using Sparse = Eigen::SparseMatrix<double>;
 
 constexpr Eigen::Index max_width = 24;
-
-template <class Body>
-void for_each_part(std::size_t count, const Body& body)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(count > 1)
-  {
-    tbb::parallel_for(std::size_t(0), count, body);
-    return;
-  }
-#endif
-  for(std::size_t i = 0; i < count; ++i) body(i);
-}
 
 // The strictly lower `L` (unit diagonal implied) and `D`, read as Eigen's
 // solve reads them: x = P^-1 L^-T D^-1 L^-1 P b.
@@ -76,39 +62,28 @@ void solve_columns(const Factor_view& l, const Eigen::PermutationMatrix<Eigen::D
     double* const yi = rows + (permuted ? p.indices()[i] : i) * w;
     for(Eigen::Index k = 0; k < w; ++k) yi[k] = b(i, first + k);
   }
+  // Column j's updates of the rows below it; those of the top's rows go to
+  // `top_buffer` when given (a part's own, added up before the top).
   const std::vector<int>& top = partition.top;
-  const int* const slot = partition.top_slot.data();
-  std::vector<std::vector<double>> top_updates(partition.parts.size());
-  const auto forward = [&](std::size_t part) {
-    std::vector<double>& buffer = top_updates[part];
-    buffer.assign(top.size() * std::size_t(w), 0.);
+  const auto forward = [&](int j, double* top_buffer) {
     double yj[Width > 0 ? Width : max_width];
-    for(int j : partition.parts[part])
-    {
-      for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k];
-      for(int q = l.below(j); q < l.outer[j + 1]; ++q)
-      {
-        const int i = l.inner[q];
-        double* const yi = slot[i] < 0 ? rows + Eigen::Index(i) * w : buffer.data() + Eigen::Index(slot[i]) * w;
-        const double v = l.values[q];
-        for(Eigen::Index k = 0; k < w; ++k) yi[k] -= v * yj[k];
-      }
-    }
-  };
-  for_each_part(partition.parts.size(), forward);
-  for(const std::vector<double>& buffer : top_updates)
-    for(std::size_t t = 0; t < top.size(); ++t)
-      for(Eigen::Index k = 0; k < w; ++k) rows[top[t] * w + k] += buffer[t * std::size_t(w) + std::size_t(k)];
-  double yj[Width > 0 ? Width : max_width];
-  for(int j : top)
-  {
     for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k];
     for(int q = l.below(j); q < l.outer[j + 1]; ++q)
     {
-      double* const yi = rows + Eigen::Index(l.inner[q]) * w;
+      const int i = l.inner[q], slot = top_buffer ? partition.top_slot[std::size_t(i)] : -1;
+      double* const yi = slot < 0 ? rows + Eigen::Index(i) * w : top_buffer + Eigen::Index(slot) * w;
       for(Eigen::Index k = 0; k < w; ++k) yi[k] -= l.values[q] * yj[k];
     }
-  }
+  };
+  std::vector<std::vector<double>> top_updates(partition.parts.size());
+  internal::parallel_for_each_index(partition.parts.size(), [&](std::size_t part) {
+    top_updates[part].assign(top.size() * std::size_t(w), 0.);
+    for(int j : partition.parts[part]) forward(j, top.empty() ? nullptr : top_updates[part].data());
+  });
+  for(const std::vector<double>& buffer : top_updates)
+    for(std::size_t t = 0; t < top.size(); ++t)
+      for(Eigen::Index k = 0; k < w; ++k) rows[top[t] * w + k] += buffer[t * std::size_t(w) + std::size_t(k)];
+  for(int j : top) forward(j, nullptr);
   for(Eigen::Index j = 0; j < n; ++j)
   {
     const double inverse = 1. / l.d[j];
@@ -125,7 +100,7 @@ void solve_columns(const Factor_view& l, const Eigen::PermutationMatrix<Eigen::D
     for(Eigen::Index k = 0; k < w; ++k) rows[j * w + k] = yj[k];
   };
   std::for_each(top.rbegin(), top.rend(), backward);
-  for_each_part(partition.parts.size(), [&](std::size_t part) {
+  internal::parallel_for_each_index(partition.parts.size(), [&](std::size_t part) {
     std::for_each(partition.parts[part].rbegin(), partition.parts[part].rend(), backward);
   });
   for(Eigen::Index i = 0; i < n; ++i)
@@ -222,7 +197,6 @@ Ldlt_row_solver::Ldlt_row_solver(const Eigen::SimplicialLDLT<Sparse>& ldlt, int 
   const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data()};
   whole_.parts.assign(1, std::vector<int>(std::size_t(n)));
   for(int j = 0; j < n; ++j) whole_.parts[0][std::size_t(j)] = j;
-  whole_.top_slot.assign(std::size_t(n), -1);
   split_ = parts > 1 ? split_tree(view, n, parts) : whole_;
 }
 
@@ -256,7 +230,7 @@ Eigen::MatrixXd Ldlt_row_solver::solve(const Eigen::MatrixXd& b) const
     default: return solve_columns<0>(view, p, p_inverse, partition, b, first, count, x);
     }
   };
-  for_each_part(std::size_t(groups), solve_group);
+  internal::parallel_for_each_index(std::size_t(groups), solve_group);
   return x;
 }
 

@@ -11,6 +11,35 @@ namespace MPM {
 namespace internal {
 namespace embedding {
 
+namespace {
+
+// The cluster's block operands side by side: [L_c B_c1 .. L_c B_cm L_c M_c].
+Eigen::MatrixXd cluster_operands(const Cluster_data& d)
+{
+  const int m = d.number_of_modes();
+  Eigen::MatrixXd operands(Eigen::Index(d.vertices.size()), 3 * (m + 1));
+  for(int k = 0; k < m; ++k) operands.middleCols<3>(3 * k) = d.laplacian_modes[std::size_t(k)];
+  operands.rightCols<3>() = d.laplacian_mean;
+  return operands;
+}
+
+// One product per cluster, in parallel.
+Cluster_products cluster_products(const std::vector<Cluster_data>& clusters, std::size_t modes, const Eigen::MatrixXd& z)
+{
+  Cluster_products p;
+  p.of_mode.resize(modes);
+  p.of_mean.resize(clusters.size());
+  internal::parallel_for_each_index(clusters.size(), [&](std::size_t c) {
+    const Cluster_data& d = clusters[c];
+    const Eigen::MatrixXd product = cluster_operands(d).transpose() * gather(d, z);
+    for(int k = 0; k < d.number_of_modes(); ++k) p.of_mode[std::size_t(d.offset + k)] = product.middleRows<3>(3 * k);
+    p.of_mean[c] = product.bottomRows<3>().transpose();
+  });
+  return p;
+}
+
+} // namespace
+
 void Schur_blocks::build(const std::vector<Cluster_data>& clusters, const std::vector<int>& cluster_of_mode,
                          const Eigen::MatrixXd& coupling, const Vertex_block& block)
 {
@@ -43,11 +72,8 @@ void Schur_blocks::build_inverse_blocks(const std::vector<Cluster_data>& cluster
   std::vector<Local_columns> operands(clusters.size());
   for(std::size_t c = 0; c < clusters.size(); ++c)
   {
-    const Cluster_data& d = clusters[c];
-    operands[c].rows = d.vertices;
-    operands[c].values.resize(Eigen::Index(d.vertices.size()), 3 * (d.number_of_modes() + 1));
-    for(int k = 0; k < d.number_of_modes(); ++k) operands[c].values.middleCols<3>(3 * k) = d.laplacian_modes[std::size_t(k)];
-    operands[c].values.rightCols<3>() = d.laplacian_mean;
+    operands[c].rows = clusters[c].vertices;
+    operands[c].values = cluster_operands(clusters[c]);
   }
   const Eigen::MatrixXd gram = block.inverse_gram(operands);
   const std::vector<Eigen::Index> offset = column_offsets(operands);
@@ -88,14 +114,10 @@ void Schur_blocks::update(const std::vector<Cluster_data>& clusters, const Verte
   // T_X = C^T X for every block operand X (L_c M_c and L_c B_ck), then
   // X^T A^-1 Y = X^T A_f^-1 Y - T_X^T K^-1 T_Y.
   const int dm = static_cast<int>(mode_gram.rows()), nc = static_cast<int>(clusters.size());
-  std::vector<Eigen::MatrixXd> t_mean(nc), t_mode(dm);
-  for(int c = 0; c < nc; ++c)
-  {
-    const Cluster_data& d = clusters[c];
-    const Eigen::MatrixXd local = gather(d, block.update_columns());
-    t_mean[c] = local.transpose() * d.laplacian_mean;
-    for(int m = 0; m < d.number_of_modes(); ++m) t_mode[d.offset + m] = local.transpose() * d.laplacian_modes[m];
-  }
+  const Cluster_products products = cluster_products(clusters, std::size_t(dm), block.update_columns());
+  const std::vector<Eigen::MatrixXd>& t_mean = products.of_mean;
+  std::vector<Eigen::MatrixXd> t_mode(dm);
+  for(int a = 0; a < dm; ++a) t_mode[a] = products.of_mode[a].transpose();
   const auto correction = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) -> Eigen::Matrix3d {
     return x.transpose() * (block.capacitance_inverse() * y);
   };
@@ -114,37 +136,6 @@ void Schur_blocks::update(const std::vector<Cluster_data>& clusters, const Verte
       plm_blocks[std::size_t(d) * nc + c] = plm_base[std::size_t(d) * nc + c] - correction(t_mean[d], t_mean[c]);
 }
 
-namespace {
-
-// With Z_c the rows of `z` at cluster c's vertices: (L_c B_ca)^T Z_c for
-// every mode a (3 x columns) and Z_c^T L_c M_c for every cluster c
-// (columns x 3).
-struct Cluster_products
-{
-  std::vector<Eigen::MatrixXd> of_mode, of_mean;
-};
-
-Cluster_products cluster_products(const std::vector<Cluster_data>& clusters, std::size_t modes, const Eigen::MatrixXd& z)
-{
-  Cluster_products p;
-  p.of_mode.resize(modes);
-  p.of_mean.resize(clusters.size());
-  internal::parallel_for_each_index(clusters.size(), [&](std::size_t c) {
-    const Cluster_data& d = clusters[c];
-    const int m = d.number_of_modes();
-    // One product for all the cluster's operands [L B_c1 .. L B_cm L M_c].
-    Eigen::MatrixXd operands(Eigen::Index(d.vertices.size()), 3 * (m + 1));
-    for(int k = 0; k < m; ++k) operands.middleCols<3>(3 * k) = d.laplacian_modes[std::size_t(k)];
-    operands.rightCols<3>() = d.laplacian_mean;
-    const Eigen::MatrixXd product = operands.transpose() * gather(d, z);
-    for(int k = 0; k < m; ++k) p.of_mode[std::size_t(d.offset + k)] = product.middleRows<3>(3 * k);
-    p.of_mean[c] = product.bottomRows<3>().transpose();
-  });
-  return p;
-}
-
-} // namespace
-
 void Schur_blocks::set_handle_terms(const std::vector<Cluster_data>& clusters, const Point_matrix& b0,
                                     const Eigen::MatrixXd& z)
 {
@@ -161,22 +152,8 @@ void Schur_blocks::set_handle_basis(const std::vector<Cluster_data>& clusters, c
   const Eigen::Index k = handle_columns.cols();
   Eigen::MatrixXd z(anchor_solution.rows(), 3 + k);
   z << anchor_solution, handle_columns;
-  const Cluster_products p = cluster_products(clusters, std::size_t(mode_gram.rows()), z);
   Handle_basis& b = handle_basis;
-  b.z_fixed.resize(p.of_mode.size());
-  b.z_linear.resize(p.of_mode.size());
-  for(std::size_t a = 0; a < p.of_mode.size(); ++a)
-  {
-    b.z_fixed[a] = p.of_mode[a].leftCols<3>();
-    b.z_linear[a] = p.of_mode[a].rightCols(k);
-  }
-  b.zlm_fixed.resize(p.of_mean.size());
-  b.zlm_linear.resize(p.of_mean.size());
-  for(std::size_t c = 0; c < p.of_mean.size(); ++c)
-  {
-    b.zlm_fixed[c] = p.of_mean[c].topRows<3>();
-    b.zlm_linear[c] = p.of_mean[c].bottomRows(k);
-  }
+  b.products = cluster_products(clusters, std::size_t(mode_gram.rows()), z);
   // <a + S T, z_a + H T> = <a, z_a> + <H^T a + S^T z_a, T> + <T, S^T H T>.
   b.b_fixed = (anchor_rhs.array() * anchor_solution.array()).sum();
   b.b_linear = handle_columns.transpose() * anchor_rhs;
@@ -193,10 +170,12 @@ void Schur_blocks::set_handle_targets(const Eigen::MatrixXd& weighted_targets)
   const Handle_basis& b = handle_basis;
   const Eigen::MatrixXd& t = weighted_targets;
   b0_z = b.b_fixed + (b.b_linear.array() * t.array()).sum() + (t.array() * (b.b_quadratic * t).array()).sum();
-  z_blocks.resize(b.z_fixed.size());
-  for(std::size_t a = 0; a < b.z_fixed.size(); ++a) z_blocks[a] = b.z_fixed[a] + b.z_linear[a] * t;
-  zlm_blocks.resize(b.zlm_fixed.size());
-  for(std::size_t c = 0; c < b.zlm_fixed.size(); ++c) zlm_blocks[c] = b.zlm_fixed[c] + t.transpose() * b.zlm_linear[c];
+  Eigen::MatrixXd lift(3 + t.rows(), 3);
+  lift << Eigen::Matrix3d::Identity(), t;
+  z_blocks.resize(b.products.of_mode.size());
+  for(std::size_t a = 0; a < z_blocks.size(); ++a) z_blocks[a] = b.products.of_mode[a] * lift;
+  zlm_blocks.resize(b.products.of_mean.size());
+  for(std::size_t c = 0; c < zlm_blocks.size(); ++c) zlm_blocks[c] = lift.transpose() * b.products.of_mean[c];
 }
 
 } // namespace embedding

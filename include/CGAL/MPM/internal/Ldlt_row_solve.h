@@ -38,7 +38,7 @@ public:
 
   // The columns of `L` a pass visits: independent subtrees, their columns
   // in increasing order per part, and the common ancestors (`top`), with
-  // each row's index in `top` (-1 outside it).
+  // each row's index in `top` (-1 outside it; empty without a top).
   struct Partition
   {
     std::vector<std::vector<int>> parts;

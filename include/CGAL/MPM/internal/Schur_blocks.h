@@ -15,6 +15,14 @@ namespace MPM {
 namespace internal {
 namespace embedding {
 
+/// With `Z_c` the rows of a matrix `Z` at cluster c's vertices:
+/// `(L_c B_ca)^T Z_c` for every mode a (3 x columns of `Z`) and
+/// `Z_c^T L_c M_c` for every cluster c (columns of `Z` x 3).
+struct Cluster_products
+{
+  std::vector<Eigen::MatrixXd> of_mode, of_mean;
+};
+
 /// What the Schur and reduced global steps know of the vertex block `A11`:
 /// 3x3 blocks of `A11^-1` between the clusters' operands, so that an
 /// iteration never touches the vertices. Built for the factored block,
@@ -61,14 +69,14 @@ private:
   // The blocks of the factored block, which an update corrects.
   std::vector<Eigen::Matrix3d> h_base, g_base, plm_base, qlm_base;
 
-  // z_blocks[a] = z_fixed[a] + z_linear[a] T, zlm_blocks[c] = zlm_fixed[c] +
-  // T^T zlm_linear[c], b0_z = b_fixed + <b_linear, T> + <T, b_quadratic T>.
+  // With U = [I; T] ((3 + k) x 3): z_blocks[a] = of_mode[a] U and
+  // zlm_blocks[c] = U^T of_mean[c] for the products of Z = [z_a H], and
+  // b0_z = b_fixed + <b_linear, T> + <T, b_quadratic T>.
   struct Handle_basis
   {
-    std::vector<Eigen::Matrix3d> z_fixed, zlm_fixed;
-    std::vector<Eigen::MatrixXd> z_linear, zlm_linear; // 3 x k, k x 3
+    Cluster_products products;
     double b_fixed = 0.;
-    Eigen::MatrixXd b_linear, b_quadratic;             // k x 3, k x k
+    Eigen::MatrixXd b_linear, b_quadratic; // k x 3, k x k
   } handle_basis;
 };
 
