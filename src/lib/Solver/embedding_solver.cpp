@@ -166,9 +166,10 @@ Solve_report Embedding_solver::solve_from_current_state()
     }
     else if(quasi_newton)
       gradient = d.rotation_gradient();
+    double remaining = std::numeric_limits<double>::infinity();
     if(newton)
     {
-      const double improved = d.newton_improve(e, damping);
+      const double improved = d.newton_improve(e, damping, &remaining);
       if(improved < e) x = d.packed_state();
       e = improved;
     }
@@ -177,7 +178,8 @@ Solve_report Embedding_solver::solve_from_current_state()
     report.energies.push_back(e);
     ++report.iterations;
     if(d.options.iteration_callback) d.options.iteration_callback(report.iterations, e);
-    if(previous - e <= d.options.tolerance * std::max(previous, std::numeric_limits<double>::min()))
+    const double tolerance = d.options.tolerance * std::max(previous, std::numeric_limits<double>::min());
+    if(previous - e <= tolerance || remaining <= d.options.tolerance * e)
     {
       report.converged = true;
       break;

@@ -99,7 +99,11 @@ struct Embedding_options
   /// where the last ended.
   bool predict_rotations = true;
   int max_iterations = 100;  ///< iteration cap of `solve()`
-  double tolerance = 1e-6;   ///< stop when the energy decreases by less than this fraction
+  /// `solve()` stops when an iteration lowers the energy by less than this
+  /// fraction, or, after a Newton step, when the next Newton step would
+  /// (its quadratic model at the new rotations): a drag frame then needs no
+  /// iteration that only confirms convergence.
+  double tolerance = 1e-6;
   /// Called by `solve()` after each iteration with its number (from 1) and
   /// energy: progress for a long solve. Empty: not called.
   std::function<void(int iteration, double energy)> iteration_callback;
@@ -187,7 +191,8 @@ public:
 
   /// Runs local/global iterations (Anderson-accelerated) from the current
   /// state until the energy decreases by less than `options.tolerance`
-  /// (relative) or `options.max_iterations` is reached.
+  /// (relative; with Newton's steps, also when the next step's predicted
+  /// decrease is below it) or `options.max_iterations` is reached.
   ///
   /// Throws `Computation_error` naming the part (cluster) or handle at fault
   /// when a factorization fails or is not positive definite, an iterate or

@@ -161,7 +161,9 @@ struct Embedding_solver::Impl
   Eigen::VectorXd solve_coordinates() const;
   Eigen::MatrixXd reduced_hessian() const;
   Eigen::VectorXd without_free_turns(Eigen::VectorXd step) const;
-  double newton_improve(double energy, double& damping);
+  double newton_improve(double energy, double& damping, double* remaining = nullptr);
+  double remaining_decrease(const Eigen::MatrixXd& hessian, const Eigen::LDLT<Eigen::MatrixXd>& ldlt,
+                            const Eigen::VectorXd& gradient, const Eigen::VectorXd& step, double decrease) const;
   Eigen::MatrixXd positions_rhs(const Eigen::VectorXd& lambda) const;
   Point_matrix positions_from(const Eigen::VectorXd& lambda) const;
   std::vector<Eigen::Matrix3d> w_of(const Eigen::VectorXd& lambda) const;
