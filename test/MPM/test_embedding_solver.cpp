@@ -612,3 +612,35 @@ TEST(Embedding_solver, drag_frames_start_at_predicted_rotations)
   }
   EXPECT_LT(iterations_predicted, iterations_plain);
 }
+
+// Newton's step predicts what the next one would remove: a drag frame stops
+// on that, without an iteration that only confirms convergence (two per
+// frame before), and the prediction holds: each frame's energy is within
+// the tolerance of the minimum (a solve from rest to 1e-12).
+TEST(Embedding_solver, drag_frames_stop_when_the_next_newton_step_would_not_pay)
+{
+  const Learned& l = learned(Synthetic_family::hand);
+  const Embedding_problem problem = make_deformation_problem(l.model);
+  const std::vector<int> handles = handle_per_part(l.truth);
+  const Point_matrix& rest = problem.mesh.points;
+  const Eigen::RowVector3d step = 0.005 * diagonal(rest) * Eigen::RowVector3d(1., 0.5, 0.);
+  Embedding_solver solver(problem);
+  Point_matrix targets = rows(rest, handles);
+  const double tolerance = Embedding_options().tolerance;
+  int iterations = 0;
+  for(int frame = 0; frame < 12; ++frame)
+  {
+    targets.row(0) += step;
+    solver.set_handles(handles, targets);
+    const Solve_report report = solver.solve();
+    ASSERT_TRUE(report.converged) << "frame " << frame;
+    if(frame >= 2) iterations += report.iterations;
+    Embedding_options tight;
+    tight.tolerance = 1e-12;
+    Embedding_solver again(problem, tight);
+    again.set_handles(handles, targets);
+    const double converged = again.solve().energy();
+    EXPECT_LE(report.energy() - converged, tolerance * converged) << "frame " << frame;
+  }
+  EXPECT_LE(iterations, 12) << "10 frames";
+}
