@@ -29,16 +29,18 @@ void Embedding_solver::Impl::coordinate_system(Eigen::MatrixXd& s, Eigen::Vector
     for(int d = 0; d < nc; ++d) relative[std::size_t(c) * nc + d] = rotations[d].transpose() * rotations[c];
   s = schur.s0;
   r = schur.r0;
+  // S is symmetric: its lower triangle, mirrored (the blocks are read on
+  // every settle of the coordinates, a few per drag frame).
   for(int a = 0; a < dm; ++a)
   {
     const int c = cluster_of_mode[a];
-    for(int b = 0; b < dm; ++b)
+    for(int b = 0; b <= a; ++b)
       s(a, b) -= trace_product(schur.h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
     for(int d = 0; d < nc; ++d)
       r[a] += trace_product(schur.g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
     r[a] += trace_product(schur.z_blocks[a], rotations[c]);
   }
-  s = 0.5 * (s + s.transpose());
+  s = Eigen::MatrixXd(s.selfadjointView<Eigen::Lower>());
 }
 
 // The LLT factor of S(R) at the current rotations, and r(R) in `r`.
@@ -70,15 +72,19 @@ Eigen::VectorXd Embedding_solver::Impl::solve_coordinates() const
 
 Eigen::MatrixXd Embedding_solver::Impl::positions_rhs(const Eigen::VectorXd& lambda) const
 {
-  Eigen::MatrixXd rhs = b0;
-  for(std::size_t c = 0; c < clusters.size(); ++c)
-  {
+  // The clusters' terms in parallel; added in order, as clusters may share
+  // vertices.
+  std::vector<Eigen::MatrixXd> rotated(clusters.size());
+  const auto term = [&](std::size_t c) {
     const Cluster_data& d = clusters[c];
     Point_matrix lm = d.laplacian_mean;
     for(int k = 0; k < d.number_of_modes(); ++k) lm += lambda[d.offset + k] * d.laplacian_modes[k];
-    const Eigen::MatrixXd rotated = lm * rotations[c].transpose();
-    for(std::size_t i = 0; i < d.vertices.size(); ++i) rhs.row(d.vertices[i]) += rotated.row(i);
-  }
+    rotated[c] = lm * rotations[c].transpose();
+  };
+  internal::parallel_for_each_index(clusters.size(), term);
+  Eigen::MatrixXd rhs = b0;
+  for(std::size_t c = 0; c < clusters.size(); ++c)
+    for(std::size_t i = 0; i < clusters[c].vertices.size(); ++i) rhs.row(clusters[c].vertices[i]) += rotated[c].row(i);
   return rhs;
 }
 
@@ -88,6 +94,8 @@ Point_matrix Embedding_solver::Impl::positions_from(const Eigen::VectorXd& lambd
 }
 
 // W[c][d] = X_c^T A11^-1 X_d at [c * nc + d], and X_c^T Z at [nc * nc + c].
+// W[d][c] is W[c][d]^T: half of them are computed (the blocks are read on
+// every settle of the coordinates, a few per drag frame).
 std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd& lambda) const
 {
   const int nc = static_cast<int>(clusters.size()), dm = total_modes;
@@ -95,7 +103,7 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
   for(int c = 0; c < nc; ++c)
   {
     const Cluster_data& cc = clusters[c];
-    for(int d = 0; d < nc; ++d)
+    for(int d = c; d < nc; ++d)
     {
       const Cluster_data& cd = clusters[d];
       Eigen::Matrix3d entry = schur.plm_blocks[std::size_t(d) * nc + c].transpose();
@@ -109,6 +117,7 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
           entry += lk * lambda[cd.offset + l] * schur.h_blocks[std::size_t(cc.offset + k) * dm + cd.offset + l];
       }
       w[std::size_t(c) * nc + d] = entry;
+      w[std::size_t(d) * nc + c] = entry.transpose();
     }
     Eigen::Matrix3d z = schur.zlm_blocks[c].transpose();
     for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * schur.z_blocks[cc.offset + k];
