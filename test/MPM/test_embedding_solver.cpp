@@ -575,6 +575,17 @@ TEST(Embedding_solver, handle_sets_on_a_solver_factored_without_handles_equal_re
   }
 }
 
+// A drag of the synthetic hand: a handle on every part, the first moved
+// by half a percent of the diagonal each frame.
+struct Hand_drag
+{
+  const Learned& l = learned(Synthetic_family::hand);
+  const Embedding_problem problem = make_deformation_problem(l.model);
+  const std::vector<int> handles = handle_per_part(l.truth);
+  const Point_matrix& rest = problem.mesh.points;
+  const Eigen::RowVector3d step = 0.005 * diagonal(rest) * Eigen::RowVector3d(1., 0.5, 0.);
+};
+
 // A drag: one handle moved a little each frame, each frame solved to
 // convergence. Starting where the clusters turn once more as they turned
 // in the frame before lands where starting at the last frame's solution
@@ -582,11 +593,8 @@ TEST(Embedding_solver, handle_sets_on_a_solver_factored_without_handles_equal_re
 // iterations, and each solve's energy still never increases.
 TEST(Embedding_solver, drag_frames_start_at_predicted_rotations)
 {
-  const Learned& l = learned(Synthetic_family::hand);
-  const Embedding_problem problem = make_deformation_problem(l.model);
-  const std::vector<int> handles = handle_per_part(l.truth);
-  const Point_matrix& rest = problem.mesh.points;
-  const Eigen::RowVector3d step = 0.005 * diagonal(rest) * Eigen::RowVector3d(1., 0.5, 0.);
+  const Hand_drag drag;
+  const auto& [l, problem, handles, rest, step] = drag;
   Embedding_options plain;
   plain.predict_rotations = false;
   Embedding_solver predicted(problem), unpredicted(problem, plain);
@@ -619,11 +627,8 @@ TEST(Embedding_solver, drag_frames_start_at_predicted_rotations)
 // the tolerance of the minimum (a solve from rest to 1e-12).
 TEST(Embedding_solver, drag_frames_stop_when_the_next_newton_step_would_not_pay)
 {
-  const Learned& l = learned(Synthetic_family::hand);
-  const Embedding_problem problem = make_deformation_problem(l.model);
-  const std::vector<int> handles = handle_per_part(l.truth);
-  const Point_matrix& rest = problem.mesh.points;
-  const Eigen::RowVector3d step = 0.005 * diagonal(rest) * Eigen::RowVector3d(1., 0.5, 0.);
+  const Hand_drag drag;
+  const auto& [l, problem, handles, rest, step] = drag;
   Embedding_solver solver(problem);
   Point_matrix targets = rows(rest, handles);
   const double tolerance = Embedding_options().tolerance;

@@ -178,8 +178,8 @@ Solve_report Embedding_solver::solve_from_current_state()
     report.energies.push_back(e);
     ++report.iterations;
     if(d.options.iteration_callback) d.options.iteration_callback(report.iterations, e);
-    const double tolerance = d.options.tolerance * std::max(previous, std::numeric_limits<double>::min());
-    if(previous - e <= tolerance || remaining <= d.options.tolerance * e)
+    const double tolerance = d.options.tolerance;
+    if(previous - e <= tolerance * std::max(previous, std::numeric_limits<double>::min()) || remaining <= tolerance * e)
     {
       report.converged = true;
       break;
