@@ -9,6 +9,7 @@
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
@@ -21,7 +22,10 @@ namespace CGAL {
 namespace MPM {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
-using internal::Indexed_surface_mesh;
+// The hole filling searches a 3D Delaunay triangulation of the loop, which
+// needs exact predicates: with inexact ones a loop of nearly coplanar,
+// nearly cocircular points (a docking seam) kept it searching for minutes.
+using Capped_mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
 namespace {
 
@@ -55,8 +59,8 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
         for(int local : type.sites[std::size_t(s)].vertices) free_site_node[std::size_t(a.vertex(node, local))] = node;
   }
   if(std::all_of(free_site_node.begin(), free_site_node.end(), [](int node) { return node < 0; })) return 0;
-  Indexed_surface_mesh surface = internal::to_surface_mesh(a.mesh, "assembly", "capping free sites");
-  std::vector<Indexed_surface_mesh::Halfedge_index> borders;
+  Capped_mesh surface = internal::to_surface_mesh_of<Capped_mesh::Point>(a.mesh, "assembly", "capping free sites");
+  std::vector<Capped_mesh::Halfedge_index> borders;
   PMP::extract_boundary_cycles(surface, std::back_inserter(borders));
   std::vector<std::vector<int>> cap_faces;
   std::vector<int> cap_nodes;
@@ -70,7 +74,7 @@ int cap_free_sites(const Morphable_part_model& model, Assembly& a)
       free_loop = free_loop && node >= 0;
     }
     if(!free_loop) continue;
-    std::vector<Indexed_surface_mesh::Face_index> faces;
+    std::vector<Capped_mesh::Face_index> faces;
     PMP::triangulate_refine_and_fair_hole(surface, h, std::back_inserter(faces), CGAL::Emptyset_iterator());
     const int type = a.graph.nodes[std::size_t(node)].type;
     a.face_nodes.resize(surface.number_of_faces(), -1);
