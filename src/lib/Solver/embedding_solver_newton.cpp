@@ -9,6 +9,7 @@
 #include <CGAL/MPM/internal/Embedding_solver_impl.h>
 
 #include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/internal/Parallel_for.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -66,47 +67,52 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
         const Eigen::Matrix3d square = cross_matrix(i) * cross_matrix(j) + cross_matrix(j) * cross_matrix(i);
         hessian(3 * c + i, 3 * c + j) -= frobenius(rotations[c] * square, covariance);
       }
-    for(int d = 0; d < nc; ++d)
+    // The pair (d, c) adds what (c, d) adds, transposed (W[d][c] is
+    // W[c][d]^T): each pair is computed once, counted twice.
+    for(int d = c; d < nc; ++d)
+    {
+      const double count = d == c ? 1. : 2.;
       for(int i = 0; i < 3; ++i)
       {
         const Eigen::Matrix3d aw = a[3 * std::size_t(c) + i] * w(c, d);
         for(int j = 0; j < 3; ++j)
         {
-          const double x = frobenius(aw, a[3 * std::size_t(d) + j]);
+          const double x = count * frobenius(aw, a[3 * std::size_t(d) + j]);
           hessian(3 * c + i, 3 * d + j) -= x;
           hessian(3 * d + j, 3 * c + i) -= x;
         }
       }
+    }
   }
   if(dm == 0) return 0.5 * (hessian + hessian.transpose());
 
   // F_wl: -2 <R_c [e_i]x, dC_c / dlambda_a>, with (from w_of())
   //   dC_c/dlambda_a = [a in c] (z_a^T + sum_d R_d qlm_ad^T + sum_k lambda_k R_d(k) h_ka)
   //                  + R_d(a) (g_ac + sum_{l in c} lambda_l h_al).
+  // Each mode's column on its own, in parallel.
   Eigen::MatrixXd mixed = Eigen::MatrixXd::Zero(3 * nc, dm);
-  for(int m = 0; m < dm; ++m)
-  {
-    const int own = cluster_of_mode[m];
+  internal::parallel_for_each_index(std::size_t(dm), [&](std::size_t mode) {
+    const int m = int(mode), own = cluster_of_mode[mode];
     // One product per cluster d: sum_k lambda_k R_d h_km over d's modes k.
-    Eigen::Matrix3d in_own = schur.z_blocks[m].transpose();
+    Eigen::Matrix3d in_own = schur.z_blocks[mode].transpose();
     for(int d = 0; d < nc; ++d)
     {
-      Eigen::Matrix3d sum = schur.qlm_blocks[std::size_t(m) * nc + d].transpose();
+      Eigen::Matrix3d sum = schur.qlm_blocks[mode * nc + d].transpose();
       for(int k = clusters[d].offset; k < clusters[d].offset + clusters[d].number_of_modes(); ++k)
-        sum += coordinates[k] * schur.h_blocks[std::size_t(k) * dm + m];
+        sum += coordinates[k] * schur.h_blocks[std::size_t(k) * dm + mode];
       in_own += rotations[d] * sum;
     }
     for(int c = 0; c < nc; ++c)
     {
       const Cluster_data& cc = clusters[c];
-      Eigen::Matrix3d derivative = schur.g_blocks[std::size_t(m) * nc + c];
+      Eigen::Matrix3d derivative = schur.g_blocks[mode * nc + c];
       for(int l = 0; l < cc.number_of_modes(); ++l)
-        derivative += coordinates[cc.offset + l] * schur.h_blocks[std::size_t(m) * dm + cc.offset + l];
+        derivative += coordinates[cc.offset + l] * schur.h_blocks[mode * dm + cc.offset + l];
       derivative = rotations[own] * derivative;
       if(c == own) derivative += in_own;
       for(int i = 0; i < 3; ++i) mixed(3 * c + i, m) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
     }
-  }
+  });
   // mixed (2 S)^-1 mixed^T = 0.5 Y^T Y with Y = L^-1 mixed^T, S = L L^T
   // factored by the global step before (the same rotations): one triangular
   // solve, its column halves in parallel, and a symmetric product (a third
@@ -122,8 +128,23 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
 #else
   forward(0, y.cols());
 #endif
+  // Y^T Y's lower triangle as two diagonal blocks beside one off-diagonal
+  // block, of about equal work.
+  const Eigen::Index rest = y.cols() - half;
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(y.cols(), y.cols());
-  gram.selfadjointView<Eigen::Lower>().rankUpdate(y.transpose(), 0.5);
+  const auto diagonal_blocks = [&] {
+    gram.topLeftCorner(half, half).selfadjointView<Eigen::Lower>().rankUpdate(y.leftCols(half).transpose(), 0.5);
+    gram.bottomRightCorner(rest, rest).selfadjointView<Eigen::Lower>().rankUpdate(y.rightCols(rest).transpose(), 0.5);
+  };
+  const auto off_diagonal_block = [&] {
+    gram.bottomLeftCorner(rest, half).noalias() = 0.5 * y.rightCols(rest).transpose() * y.leftCols(half);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_invoke(diagonal_blocks, off_diagonal_block);
+#else
+  diagonal_blocks();
+  off_diagonal_block();
+#endif
   hessian -= Eigen::MatrixXd(gram.selfadjointView<Eigen::Lower>());
   return 0.5 * (hessian + hessian.transpose());
 }
