@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <set>
@@ -329,6 +330,43 @@ TEST(Joint_cutting, AClickWhereALimbFlaresIntoTheBodyCutsTheLimb)
     GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
   EXPECT_LT(leg, 0.01);
   EXPECT_LT(one_click_distance("hand_190", 0, 7), 0.01);
+}
+
+// Edges of the closed path `p` (first vertex repeated last), sorted.
+std::vector<std::pair<int, int>> sorted_edges(const std::vector<int>& p)
+{
+  std::vector<std::pair<int, int>> e;
+  for(std::size_t k = 0; k + 1 < p.size(); ++k) e.push_back(std::minmax(p[k], p[k + 1]));
+  std::sort(e.begin(), e.end());
+  return e;
+}
+
+// Two human cuts of octopus_124 bound the thin ring (label 11) where an arm
+// (8) leaves the body (0); the ring is pinched, so the two cuts share a
+// few edges without crossing. The second click was refused as a second
+// click on the first joint.
+TEST(Joint_cutting, CutsThatShareAFewEdgesAreTwoJoints)
+{
+  Human_cuts h;
+  if(!read_human_cuts("octopus_124", h))
+    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+  std::vector<int> clicks;
+  std::vector<std::vector<int>> cuts;
+  for(const std::pair<int, int> labels : {std::pair<int, int>{0, 11}, {8, 11}})
+    for(const Segmentation_cut& c : segmentation_cuts(h.human.mesh, h.human.face_labels))
+      if(c.first_label == labels.first && c.second_label == labels.second) {
+        clicks.push_back(central_cut_vertex(h.human.mesh, c.vertices));
+        cuts.push_back(c.vertices);
+      }
+  ASSERT_EQ(clicks.size(), 2u);
+  const Joint_cutting_result r = cut_at_vertices(h.human.mesh, clicks, Joint_cutting_options(), "octopus_124.off");
+  ASSERT_EQ(r.cuts.size(), 2u);
+  const std::vector<std::pair<int, int>> first = sorted_edges(r.cuts[0].path), second = sorted_edges(r.cuts[1].path);
+  std::vector<std::pair<int, int>> shared;
+  std::set_intersection(first.begin(), first.end(), second.begin(), second.end(), std::back_inserter(shared));
+  EXPECT_FALSE(shared.empty());
+  for(std::size_t i = 0; i < 2; ++i)
+    EXPECT_LT(cut_distance(h.human.mesh, r.cuts[i].path, cuts[i]) / h.diagonal, 0.01) << "click at vertex " << clicks[i];
 }
 
 } // namespace
