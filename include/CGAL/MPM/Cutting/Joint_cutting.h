@@ -110,8 +110,9 @@ struct Joint_cutting_result
 /// range; a section with fewer than `minimum_section_vertices` vertices (a
 /// mesh too coarse there); a section whose points cannot be joined in order
 /// by `cut_mesh()`; two vertices on one joint (the same vertex twice, or a
-/// click whose cut, snapped or through the click, would share an edge with
-/// or cross a cut already made). Also for a mesh with holes or several
+/// click whose cut, snapped or through the click, would cross a cut already
+/// made or share an edge with it; a cut around another limb may share less
+/// than a quarter of its edges). Also for a mesh with holes or several
 /// components, and as `cut_mesh()` when the cuts together do not separate the
 /// mesh. The result is the same on every run (the skeletonization's own
 /// mesh is allocated in a fixed order, see doc/MPM/Cutting.md).
