@@ -191,10 +191,11 @@ private:
   // The first cut already made that `line` (around the limb of `s`) runs
   // along or crosses: two closed cuts of a sphere that do neither make
   // three regions. Cuts may touch at a vertex: people cut an arm's base
-  // ring pinched to a point. Cuts around two limbs may also share a few
-  // edges, less than a quarter of the shorter: two fingers' bases meet in
-  // the web between them, an arm's base ring meets its neighbour's (on the
-  // 12 PSB meshes, two human cuts more found, none lost).
+  // ring pinched to a point. Cuts whose sections go around two limbs
+  // (around_one_limb()) may also share a few edges, less than a quarter of
+  // the shorter: two fingers' bases meet in the web between them, and the
+  // cuts either side of a ring where an arm leaves the body meet where the
+  // ring narrows (on the 12 PSB meshes, two human cuts more found, none lost).
   std::size_t conflicting(const std::vector<int>& path, const Cut_line& line, const Section& s) const
   {
     for(std::size_t i = 0; i < paths_.size(); ++i) {
