@@ -12,6 +12,7 @@
 //   face_graph_pipeline data/diplodocus.off examples/MPM/data/diplodocus_legs.cuts.json \
 //                       examples/MPM/data/diplodocus_legs.annotation.json
 #include <CGAL/MPM/IO/Annotation_io.h>
+#include <CGAL/MPM/Cutting/Face_graph_cutting.h>
 #include <CGAL/MPM/Editing/Face_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>

@@ -4,6 +4,7 @@
 // The whole pipeline over the user's own mesh type: cut -> learn -> deform
 // -> assemble on Surface_mesh, Polyhedron_3 and OpenMesh, with labels and
 // results in property maps, gives what the indexed-mesh path gives.
+#include <CGAL/MPM/Cutting/Face_graph_cutting.h>
 #include <CGAL/MPM/Editing/Face_graph_editing.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>

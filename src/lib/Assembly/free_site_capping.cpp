@@ -9,7 +9,6 @@
 #include <CGAL/MPM/internal/Part_graph_problem.h>
 #include <CGAL/MPM/internal/Training_segments.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
@@ -25,7 +24,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // The hole filling searches a 3D Delaunay triangulation of the loop, which
 // needs exact predicates: with inexact ones a loop of nearly coplanar,
 // nearly cocircular points (a docking seam) kept it searching for minutes.
-using Capped_mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+using Capped_mesh = internal::Exact_predicates_surface_mesh;
 
 namespace {
 

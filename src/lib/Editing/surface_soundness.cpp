@@ -5,6 +5,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/IO/Mesh_io.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
+#include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 #include <CGAL/MPM/internal/Nearest_surface.h>
 #include <CGAL/MPM/internal/Target_unfolding.h>
 
@@ -13,7 +14,6 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -31,10 +31,10 @@ namespace MPM {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point_3 = Kernel::Point_3;
+using Mesh = internal::Exact_predicates_surface_mesh;
+using Kernel = CGAL::Kernel_traits<Mesh::Point>::Kernel;
+using Point_3 = Mesh::Point;
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Mesh = CGAL::Surface_mesh<Point_3>;
 
 std::vector<Point_3> points_of(const Indexed_mesh& mesh)
 {

@@ -10,7 +10,6 @@
 #include <CGAL/MPM/internal/Nearest_surface.h>
 
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <map>
 #include <set>
@@ -24,8 +23,7 @@ namespace {
 // Crossings are decided by exact predicates, as `self_intersecting_faces()`
 // decides them: with rounded ones, faces meeting at a shallow angle along an
 // edge are reported as crossing.
-using Exact_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Exact_kernel::Point_3>;
+using Mesh = internal::Exact_predicates_surface_mesh;
 using Face = Mesh::Face_index;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -183,7 +181,7 @@ Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int
   Mesh example;
   try
   {
-    example = to_surface_mesh_of<Exact_kernel::Point_3>(mesh, "learned example", "untangling");
+    example = to_surface_mesh_of<Mesh::Point>(mesh, "learned example", "untangling");
   }
   catch(const Input_error&)
   {

@@ -92,7 +92,7 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
   // Each mode's column on its own, in parallel.
   Eigen::MatrixXd mixed = Eigen::MatrixXd::Zero(3 * nc, dm);
   internal::parallel_for_each_index(std::size_t(dm), [&](std::size_t mode) {
-    const int m = int(mode), own = cluster_of_mode[mode];
+    const int own = cluster_of_mode[mode];
     // One product per cluster d: sum_k lambda_k R_d h_km over d's modes k.
     Eigen::Matrix3d in_own = schur.z_blocks[mode].transpose();
     for(int d = 0; d < nc; ++d)
@@ -110,7 +110,7 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
         derivative += coordinates[cc.offset + l] * schur.h_blocks[mode * dm + cc.offset + l];
       derivative = rotations[own] * derivative;
       if(c == own) derivative += in_own;
-      for(int i = 0; i < 3; ++i) mixed(3 * c + i, m) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
+      for(int i = 0; i < 3; ++i) mixed(3 * c + i, Eigen::Index(mode)) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
     }
   });
   // mixed (2 S)^-1 mixed^T = 0.5 Y^T Y with Y = L^-1 mixed^T, S = L L^T

@@ -6,7 +6,6 @@
 #include <CGAL/MPM/Assembly/Assembly.h>
 #include <CGAL/MPM/Editing/Editing.h>
 #include <CGAL/MPM/IO/Face_graph_conversion.h>
-#include <CGAL/MPM/Cutting/Mesh_cutting.h>
 #include <CGAL/MPM/Named_parameters.h>
 
 #include <map>
@@ -16,26 +15,6 @@
 
 namespace CGAL {
 namespace MPM {
-
-/// \ingroup PkgMPMRef
-/// Cuts the triangle mesh `g` along the cutting lines of `cuts` (vertex
-/// indices in the order of `vertices(g)`, see `vertex_order()`) and writes
-/// the label of each face into `face_labels`, as `cut_mesh()` labels the
-/// regions. Returns the cut's paths and lengths as `cut_mesh()` does.
-///
-/// \tparam FaceGraph a model of `FaceListGraph`
-/// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
-/// Named parameters: `vertex_point_map`.
-template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
-Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceLabelMap face_labels,
-                        const Cutting_options& options = Cutting_options(),
-                        const NamedParameters& np = parameters::default_values())
-{
-  Cutting_result cut = cut_mesh(to_indexed_mesh(g, np), cuts, options, "face graph");
-  std::size_t t = 0;
-  for(auto f : faces(g)) put(face_labels, f, cut.mesh.face_labels[t++]);
-  return cut;
-}
 
 namespace internal {
 

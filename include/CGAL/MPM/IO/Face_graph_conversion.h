@@ -107,6 +107,39 @@ std::vector<int> face_labels_from_map(const FaceGraph& g, FaceLabelMap labels)
 }
 
 /// \ingroup PkgMPMRef
+/// `g` as a labelled mesh: `to_indexed_mesh(g, np)` with the labels of
+/// `face_labels_from_map()`, named `source` in error messages.
+template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
+Labeled_mesh to_labeled_mesh(const FaceGraph& g, FaceLabelMap face_labels, const std::string& source = "face graph",
+                             const NamedParameters& np = parameters::default_values())
+{
+  Labeled_mesh mesh;
+  mesh.mesh = to_indexed_mesh(g, np);
+  mesh.face_labels = face_labels_from_map(g, face_labels);
+  mesh.source = source;
+  return mesh;
+}
+
+/// \ingroup PkgMPMRef
+/// Writes `labels` (one per face, in the order of `faces(g)`) into the
+/// property map `face_labels`: the inverse of `face_labels_from_map()`, how
+/// the cutting functions over a face graph hand their labels back.
+///
+/// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor of
+///         `FaceGraph` to `int`
+///
+/// Throws `Input_error` when `g` has not one face per label.
+template <class FaceGraph, class FaceLabelMap>
+void write_face_labels(const std::vector<int>& labels, const FaceGraph& g, FaceLabelMap face_labels)
+{
+  if(static_cast<std::size_t>(num_faces(g)) != labels.size())
+    throw Input_error("face graph", "", "has " + std::to_string(num_faces(g)) + " faces; the labels are for " +
+                                          std::to_string(labels.size()));
+  std::size_t t = 0;
+  for(auto f : faces(g)) put(face_labels, f, labels[t++]);
+}
+
+/// \ingroup PkgMPMRef
 /// Fills the empty `g` with `mesh`: vertex `i` of `mesh` becomes the
 /// `i`-th vertex of `vertices(g)` and triangle `t` the `t`-th face of
 /// `faces(g)`, so that `to_indexed_mesh(g)` gives `mesh` back. Returns the

@@ -3,6 +3,7 @@
 #ifndef CGAL_MPM_PART_TYPE_PROPOSAL_H
 #define CGAL_MPM_PART_TYPE_PROPOSAL_H
 
+#include <CGAL/MPM/IO/Face_graph_conversion.h>
 #include <CGAL/MPM/Indexed_mesh.h>
 #include <CGAL/MPM/Model/Model_parameters.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
@@ -95,6 +96,26 @@ struct Part_type_proposal
 /// Throws `Input_error` as `validate_segmentation()` does.
 Part_type_proposal propose_part_types(const Labeled_mesh& mesh,
                                       const Part_type_proposal_options& options = Part_type_proposal_options());
+
+/// \ingroup PkgMPMRef
+/// `propose_part_types()` on the user's mesh: the segments are the faces of
+/// the triangle mesh `g` with one label in `face_labels` (as
+/// `cut_at_proposed_joints()` or `cut_mesh()` over a face graph write them).
+/// The proposal's annotation goes with the same map to
+/// `learn_morphable_part_model()` over `g`.
+///
+/// \tparam FaceGraph a model of `FaceListGraph`
+/// \tparam FaceLabelMap a `ReadablePropertyMap` from the face descriptor to a type convertible to `int`
+/// Named parameters: `vertex_point_map`.
+///
+/// Throws `Input_error` as the overload for a labelled mesh does.
+template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
+Part_type_proposal propose_part_types(const FaceGraph& g, FaceLabelMap face_labels,
+                                      const Part_type_proposal_options& options = Part_type_proposal_options(),
+                                      const NamedParameters& np = parameters::default_values())
+{
+  return propose_part_types(to_labeled_mesh(g, face_labels, "face graph", np), options);
+}
 
 /// \ingroup PkgMPMRef
 /// Proposes part types for several meshes of a kind at once, so that a name

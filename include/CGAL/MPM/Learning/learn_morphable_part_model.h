@@ -124,11 +124,7 @@ Morphable_part_model learn_morphable_part_model(const FaceGraph& g, FaceLabelMap
                                                 const Learning_options& options = Learning_options(),
                                                 const NamedParameters& np = parameters::default_values())
 {
-  Labeled_mesh mesh;
-  mesh.mesh = to_indexed_mesh(g, np);
-  mesh.face_labels = face_labels_from_map(g, face_labels);
-  mesh.source = "face graph";
-  return learn_morphable_part_model(mesh, annotation, options);
+  return learn_morphable_part_model(to_labeled_mesh(g, face_labels, "face graph", np), annotation, options);
 }
 
 } // namespace MPM

@@ -6,6 +6,7 @@
 #include <CGAL/MPM/Indexed_mesh.h>
 #include <CGAL/MPM/Input_error.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -16,6 +17,11 @@ namespace MPM {
 namespace internal {
 
 using Indexed_surface_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
+
+// For algorithms whose predicates must be exact: self-intersection tests,
+// and hole filling, whose 3D Delaunay search can run for minutes on a
+// nearly cocircular loop with inexact ones.
+using Exact_predicates_surface_mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
 // `mesh` as a halfedge structure for CGAL's algorithms that need one
 // (cutting, ARAP, remeshing, AABB location): vertex i and face f of the

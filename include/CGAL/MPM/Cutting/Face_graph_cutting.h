@@ -1,0 +1,98 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MPM_FACE_GRAPH_CUTTING_H
+#define CGAL_MPM_FACE_GRAPH_CUTTING_H
+
+#include <CGAL/MPM/Cutting/Joint_cutting.h>
+#include <CGAL/MPM/Cutting/Joint_proposal.h>
+#include <CGAL/MPM/Cutting/Mesh_cutting.h>
+#include <CGAL/MPM/IO/Face_graph_conversion.h>
+#include <CGAL/MPM/Input_error.h>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace MPM {
+
+/// \ingroup PkgMPMRef
+/// Cuts the triangle mesh `g` along the cutting lines of `cuts` (vertex
+/// indices in the order of `vertices(g)`, see `vertex_order()`) and writes
+/// the label of each face into `face_labels`, as `cut_mesh()` labels the
+/// regions. Returns the cut's paths and lengths as `cut_mesh()` does.
+///
+/// \tparam FaceGraph a model of `FaceListGraph`
+/// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
+/// Named parameters: `vertex_point_map`.
+template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
+Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceLabelMap face_labels,
+                        const Cutting_options& options = Cutting_options(),
+                        const NamedParameters& np = parameters::default_values())
+{
+  Cutting_result cut = cut_mesh(to_indexed_mesh(g, np), cuts, options, "face graph");
+  write_face_labels(cut.mesh.face_labels, g, face_labels);
+  return cut;
+}
+
+/// \ingroup PkgMPMRef
+/// One click per joint on the user's mesh: cuts the closed triangle mesh `g`
+/// around the limb through or next to each vertex of `clicks`, as
+/// `cut_at_vertices()` does, and writes the label of each face into
+/// `face_labels` (0 for the region of the first face, as `cut_mesh()`
+/// numbers regions). The result's vertex indices, in its cuts and its
+/// labelled mesh, are in the order of `vertices(g)` (`vertex_order()`).
+///
+/// \tparam FaceGraph a model of `FaceListGraph`
+/// \tparam VertexRange a range of vertex descriptors of `g`
+/// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
+/// Named parameters: `vertex_point_map`.
+///
+/// Throws `Input_error` as `cut_at_vertices()` does, naming the vertex by
+/// its index in `vertices(g)`.
+template <class FaceGraph, class VertexRange, class FaceLabelMap,
+          class NamedParameters = parameters::Default_named_parameters>
+Joint_cutting_result cut_at_vertices(const FaceGraph& g, const VertexRange& clicks, FaceLabelMap face_labels,
+                                     const Joint_cutting_options& options = Joint_cutting_options(),
+                                     const NamedParameters& np = parameters::default_values())
+{
+  const auto index = vertex_order(g);
+  std::vector<int> at;
+  for(auto v : clicks) {
+    const auto i = index.find(v);
+    if(i == index.end())
+      throw Input_error("face graph", "click " + std::to_string(at.size()), "is not a vertex of the mesh");
+    at.push_back(i->second);
+  }
+  Joint_cutting_result cut = cut_at_vertices(to_indexed_mesh(g, np), at, options, "face graph");
+  write_face_labels(cut.mesh.face_labels, g, face_labels);
+  return cut;
+}
+
+/// \ingroup PkgMPMRef
+/// Joints proposed automatically on the user's mesh: cuts the closed
+/// triangle mesh `g` into a body and limb segments as
+/// `cut_at_proposed_joints()` does, with no click, and writes the label of
+/// each face into `face_labels`. The proposal's vertex indices are in the
+/// order of `vertices(g)` (`vertex_order()`). The labels are ready for
+/// `propose_part_types()` and `learn_morphable_part_model()` over the same
+/// face graph: a raw mesh becomes a model with no file written by hand.
+///
+/// \tparam FaceGraph a model of `FaceListGraph`
+/// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
+/// Named parameters: `vertex_point_map`.
+///
+/// Throws `Input_error` as `cut_at_proposed_joints()` does.
+template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
+Joint_proposal cut_at_proposed_joints(const FaceGraph& g, FaceLabelMap face_labels,
+                                      const Joint_proposal_options& options = Joint_proposal_options(),
+                                      const NamedParameters& np = parameters::default_values())
+{
+  Joint_proposal proposal = cut_at_proposed_joints(to_indexed_mesh(g, np), options, "face graph");
+  write_face_labels(proposal.cutting.mesh.face_labels, g, face_labels);
+  return proposal;
+}
+
+} // namespace MPM
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,120 @@
+// Copyright (c) 2026 CGAL-MPM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Cutting the user's own mesh type: clicks given as vertex descriptors and
+// joints proposed with no click write their labels into a face property map
+// of a Surface_mesh or a Polyhedron_3, equal to the indexed-mesh path's; the
+// part types proposed from that map are the indexed path's too. A click
+// that is not a vertex of the mesh, or lies on the body, is an Input_error.
+#include <CGAL/MPM/Cutting/Face_graph_cutting.h>
+#include <CGAL/MPM/Cutting/Segmentation_measures.h>
+#include <CGAL/MPM/Input_error.h>
+#include <CGAL/MPM/Learning/Part_type_proposal.h>
+
+#include "Learned_models.h"
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace CGAL::MPM;
+using Kernel = CGAL::Simple_cartesian<double>;
+
+// The synthetic hand with its labels removed.
+const Labeled_mesh& hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth.mesh; }
+
+// What the indexed-mesh path gives: the reference each mesh type is held to.
+struct Reference
+{
+  Joint_proposal proposal;
+  std::vector<int> clicks;      // the proposal's cut vertices, clicked again
+  Joint_cutting_result clicked; // cut_at_vertices() at them
+  Part_type_proposal types;
+};
+
+const Reference& reference()
+{
+  static const Reference r = [] {
+    Reference ref;
+    ref.proposal = cut_at_proposed_joints(hand().mesh);
+    for(const Joint_cut& c : ref.proposal.cutting.cuts) ref.clicks.push_back(c.vertex);
+    ref.clicked = cut_at_vertices(hand().mesh, ref.clicks);
+    ref.types = propose_part_types(ref.proposal.cutting.mesh);
+    return ref;
+  }();
+  return r;
+}
+
+template <class Mesh>
+void expect_indexed_cuts()
+{
+  const Reference& ref = reference();
+  // The reference is a real segmentation of the hand, not a trivial one.
+  ASSERT_GE(ref.proposal.cutting.cuts.size(), 10u);
+  EXPECT_LT(rand_index_error(hand().mesh, ref.proposal.cutting.mesh.face_labels, hand().face_labels), 0.15);
+
+  Mesh g;
+  copy_to_face_graph(hand().mesh, g);
+
+  auto proposed = get(CGAL::dynamic_face_property_t<int>(), g);
+  const Joint_proposal p = cut_at_proposed_joints(g, proposed);
+  EXPECT_EQ(p.limbs, ref.proposal.limbs);
+  ASSERT_EQ(p.joints.size(), ref.proposal.joints.size());
+  for(std::size_t j = 0; j < p.joints.size(); ++j) EXPECT_EQ(p.joints[j].vertex, ref.proposal.joints[j].vertex);
+  EXPECT_EQ(face_labels_from_map(g, proposed), ref.proposal.cutting.mesh.face_labels);
+
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex(vertices(g).begin(), vertices(g).end());
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> clicks;
+  for(int v : ref.clicks) clicks.push_back(vertex[std::size_t(v)]);
+  auto clicked = get(CGAL::dynamic_face_property_t<int>(), g);
+  const Joint_cutting_result c = cut_at_vertices(g, clicks, clicked);
+  ASSERT_EQ(c.cuts.size(), ref.clicked.cuts.size());
+  for(std::size_t k = 0; k < c.cuts.size(); ++k) EXPECT_EQ(c.cuts[k].path, ref.clicked.cuts[k].path);
+  EXPECT_EQ(face_labels_from_map(g, clicked), ref.clicked.mesh.face_labels);
+
+  const Part_type_proposal types = propose_part_types(g, proposed);
+  EXPECT_EQ(types.annotation.part_type_of_label, ref.types.annotation.part_type_of_label);
+  EXPECT_EQ(types.root, ref.types.root);
+  std::set<std::string> names;
+  for(const auto& [label, type] : types.annotation.part_type_of_label) names.insert(type);
+  EXPECT_LT(names.size(), types.annotation.part_type_of_label.size()) << "some segments share a type";
+}
+
+TEST(FaceGraphCutting, SurfaceMeshGivesTheIndexedCuts) { expect_indexed_cuts<CGAL::Surface_mesh<Kernel::Point_3>>(); }
+
+TEST(FaceGraphCutting, PolyhedronGivesTheIndexedCuts) { expect_indexed_cuts<CGAL::Polyhedron_3<Kernel>>(); }
+
+TEST(FaceGraphCutting, BadClicksAreInputErrors)
+{
+  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  Mesh g;
+  copy_to_face_graph(hand().mesh, g);
+  auto labels = get(CGAL::dynamic_face_property_t<int>(), g);
+  const std::vector<Mesh::Vertex_index> outside = {Mesh::Vertex_index(Mesh::size_type(num_vertices(g) + 5))};
+  try {
+    cut_at_vertices(g, outside, labels);
+    FAIL() << "a vertex not in the mesh was clicked";
+  } catch(const Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("click 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is not a vertex of the mesh"), std::string::npos) << e.what();
+  }
+  // A click on the palm (vertex 0, no limb through it) names the vertex
+  // by its index in vertices(g), as the indexed path does.
+  try {
+    cut_at_vertices(g, std::vector<Mesh::Vertex_index>{*vertices(g).begin()}, labels);
+    FAIL() << "a click on the palm was cut";
+  } catch(const Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 0: is on the body"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
