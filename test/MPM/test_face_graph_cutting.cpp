@@ -4,7 +4,8 @@
 // Cutting the user's own mesh type: clicks given as vertex descriptors and
 // joints proposed with no click write their labels into a face property map
 // of a Surface_mesh or a Polyhedron_3, equal to the indexed-mesh path's; the
-// part types proposed from that map are the indexed path's too. A click
+// part types proposed from that map are the indexed path's too, on
+// OpenMesh as well when it is installed. A click
 // that is not a vertex of the mesh, or lies on the body, is an Input_error.
 #include <CGAL/MPM/Cutting/Face_graph_cutting.h>
 #include <CGAL/MPM/Cutting/Segmentation_measures.h>
@@ -17,6 +18,10 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#ifdef MPM_HAS_OPENMESH
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#endif
 
 #include <gtest/gtest.h>
 
@@ -32,38 +37,37 @@ using Kernel = CGAL::Simple_cartesian<double>;
 // The synthetic hand with its labels removed.
 const Labeled_mesh& hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth.mesh; }
 
-// What the indexed-mesh path gives: the reference each mesh type is held to.
+// What the indexed-mesh path gives on the same points: the reference each
+// mesh type is held to.
 struct Reference
 {
+  explicit Reference(const Indexed_mesh& mesh)
+    : proposal(cut_at_proposed_joints(mesh)), clicks(cut_vertices(proposal)), clicked(cut_at_vertices(mesh, clicks)),
+      types(propose_part_types(proposal.cutting.mesh))
+  {}
+
+  static std::vector<int> cut_vertices(const Joint_proposal& p)
+  {
+    std::vector<int> v;
+    for(const Joint_cut& c : p.cutting.cuts) v.push_back(c.vertex);
+    return v;
+  }
+
   Joint_proposal proposal;
   std::vector<int> clicks;      // the proposal's cut vertices, clicked again
   Joint_cutting_result clicked; // cut_at_vertices() at them
   Part_type_proposal types;
 };
 
-const Reference& reference()
-{
-  static const Reference r = [] {
-    Reference ref;
-    ref.proposal = cut_at_proposed_joints(hand().mesh);
-    for(const Joint_cut& c : ref.proposal.cutting.cuts) ref.clicks.push_back(c.vertex);
-    ref.clicked = cut_at_vertices(hand().mesh, ref.clicks);
-    ref.types = propose_part_types(ref.proposal.cutting.mesh);
-    return ref;
-  }();
-  return r;
-}
-
 template <class Mesh>
 void expect_indexed_cuts()
 {
-  const Reference& ref = reference();
+  Mesh g;
+  copy_to_face_graph(hand().mesh, g);
+  const Reference ref(to_indexed_mesh(g));
   // The reference is a real segmentation of the hand, not a trivial one.
   ASSERT_GE(ref.proposal.cutting.cuts.size(), 10u);
   EXPECT_LT(rand_index_error(hand().mesh, ref.proposal.cutting.mesh.face_labels, hand().face_labels), 0.15);
-
-  Mesh g;
-  copy_to_face_graph(hand().mesh, g);
 
   auto proposed = get(CGAL::dynamic_face_property_t<int>(), g);
   const Joint_proposal p = cut_at_proposed_joints(g, proposed);
@@ -92,6 +96,12 @@ void expect_indexed_cuts()
 TEST(FaceGraphCutting, SurfaceMeshGivesTheIndexedCuts) { expect_indexed_cuts<CGAL::Surface_mesh<Kernel::Point_3>>(); }
 
 TEST(FaceGraphCutting, PolyhedronGivesTheIndexedCuts) { expect_indexed_cuts<CGAL::Polyhedron_3<Kernel>>(); }
+
+#ifdef MPM_HAS_OPENMESH
+// CGAL 5.5 writes OpenMesh points through float: the reference is the
+// indexed path on those rounded points.
+TEST(FaceGraphCutting, OpenMeshGivesTheIndexedCuts) { expect_indexed_cuts<OpenMesh::TriMesh_ArrayKernelT<>>(); }
+#endif
 
 TEST(FaceGraphCutting, BadClicksAreInputErrors)
 {
