@@ -341,6 +341,19 @@ std::vector<std::pair<int, int>> sorted_edges(const std::vector<int>& p)
   return e;
 }
 
+// One click at the central vertex of each human cut between the given
+// labels, and that cut.
+void click_human_cuts(const Human_cuts& h, const std::vector<std::pair<int, int>>& between, std::vector<int>& clicks,
+                      std::vector<std::vector<int>>& cuts)
+{
+  for(const std::pair<int, int>& labels : between)
+    for(const Segmentation_cut& c : segmentation_cuts(h.human.mesh, h.human.face_labels))
+      if(c.first_label == labels.first && c.second_label == labels.second) {
+        clicks.push_back(central_cut_vertex(h.human.mesh, c.vertices));
+        cuts.push_back(c.vertices);
+      }
+}
+
 // Two human cuts of octopus_124 bound the thin ring (label 11) where an arm
 // (8) leaves the body (0); the ring is pinched, so the two cuts share a
 // few edges without crossing. The second click was refused as a second
@@ -352,12 +365,7 @@ TEST(Joint_cutting, CutsThatShareAFewEdgesAreTwoJoints)
     GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
   std::vector<int> clicks;
   std::vector<std::vector<int>> cuts;
-  for(const std::pair<int, int> labels : {std::pair<int, int>{0, 11}, {8, 11}})
-    for(const Segmentation_cut& c : segmentation_cuts(h.human.mesh, h.human.face_labels))
-      if(c.first_label == labels.first && c.second_label == labels.second) {
-        clicks.push_back(central_cut_vertex(h.human.mesh, c.vertices));
-        cuts.push_back(c.vertices);
-      }
+  click_human_cuts(h, {{0, 11}, {8, 11}}, clicks, cuts);
   ASSERT_EQ(clicks.size(), 2u);
   const Joint_cutting_result r = cut_at_vertices(h.human.mesh, clicks, Joint_cutting_options(), "octopus_124.off");
   ASSERT_EQ(r.cuts.size(), 2u);
@@ -367,6 +375,33 @@ TEST(Joint_cutting, CutsThatShareAFewEdgesAreTwoJoints)
   EXPECT_FALSE(shared.empty());
   for(std::size_t i = 0; i < 2; ++i)
     EXPECT_LT(cut_distance(h.human.mesh, r.cuts[i].path, cuts[i]) / h.diagonal, 0.01) << "click at vertex " << clicks[i];
+}
+
+// The thin ring (label 9) where another arm (2) of octopus_124 leaves the
+// body (0) lies between two concave creases a ring of faces apart. Clicked
+// on the body's side, the cut snaps to the arm's sharper crease and runs
+// through the click on the arm's side; that click then takes its crease and
+// the first cut goes back to the body's crease. Both orders give both human
+// cuts; the second click was refused as a click on the first joint.
+TEST(Joint_cutting, AThinRingBetweenTwoCreasesIsTwoJointsInEitherOrder)
+{
+  Human_cuts h;
+  if(!read_human_cuts("octopus_124", h))
+    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+  std::vector<int> clicks;
+  std::vector<std::vector<int>> cuts;
+  click_human_cuts(h, {{0, 9}, {2, 9}}, clicks, cuts);
+  ASSERT_EQ(clicks.size(), 2u);
+  for(const bool reversed : {false, true}) {
+    const std::vector<int> order = reversed ? std::vector<int>{clicks[1], clicks[0]} : clicks;
+    const Joint_cutting_result r = cut_at_vertices(h.human.mesh, order, Joint_cutting_options(), "octopus_124.off");
+    ASSERT_EQ(r.cuts.size(), 2u);
+    for(std::size_t i = 0; i < 2; ++i)
+      EXPECT_LT(cut_distance(h.human.mesh, r.cuts[i].path, cuts[reversed ? 1 - i : i]) / h.diagonal, 0.005)
+        << "click at vertex " << order[i];
+    // The ring is a region of its own: three in all.
+    EXPECT_EQ(std::set<int>(r.mesh.face_labels.begin(), r.mesh.face_labels.end()).size(), 3u);
+  }
 }
 
 } // namespace

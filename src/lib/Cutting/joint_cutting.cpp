@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -101,6 +102,14 @@ namespace {
 // click is a joint of its own.
 class Click_cuts
 {
+  // A click's cut: its section, the line through it, the path traced.
+  struct Cut
+  {
+    Section section;
+    Cut_line line;
+    std::vector<int> path;
+  };
+
 public:
   explicit Click_cuts(const Joint_finder& finder) : finder_(finder), options_(finder.options())
   {
@@ -122,31 +131,40 @@ public:
         through = thin;
         s = std::move(t);
       }
-    Cut_line line = line_of(v, s);
-    std::vector<int> path = traced(v, line);
-    // Two cuts a ring of faces apart bound a thin ring of a limb, as
-    // people cut where an arm leaves the body; clicked there, both snap to
-    // the one crease, so the second keeps the section through its click
-    // when that goes around the same limb. Otherwise, or if that section
-    // too runs along or crosses a cut made, the click was on its joint.
-    if(const std::size_t met = conflicting(path, line, s); met < clicks_.size()) {
-      if(!around_one_limb(sections_[met], through)) same_joint(v, met);
-      s = through;
-      line = line_of(v, s);
-      path = traced(v, line);
-      if(const std::size_t still = conflicting(path, line, s); still < clicks_.size()) same_joint(v, still);
+    Cut cut = traced_cut(v, std::move(s));
+    if(const std::size_t met = conflicting(cut); met < cuts_.size()) {
+      std::size_t blocking = met;
+      // Two cuts a ring of faces apart bound a thin ring of a limb, as
+      // people cut where an arm leaves the body; clicked there, both snap
+      // to one crease. The second keeps the section through its click when
+      // that goes around the same limb, or its loop snapped off the cut
+      // made when that follows a crease of its own (the other side of the
+      // ring). When the cut made runs through this click instead (it took
+      // the crease clicked now), the first click's cut is snapped off this
+      // one, so that the order of the two clicks does not matter.
+      // Otherwise the click was on the joint of the cut made.
+      if(around_one_limb(cuts_[met].section, through))
+        if(Cut c = traced_cut(v, through); (blocking = conflicting(c)) == cuts_.size()) cut = std::move(c);
+      if(blocking < cuts_.size())
+        if(std::optional<Cut> c = off_the_cut(v, through, cuts_[met].path); c && conflicting(*c) == cuts_.size()) {
+          cut = std::move(*c);
+          blocking = cuts_.size();
+        }
+      if(blocking < cuts_.size() && !(on_cut(cuts_[met].path, v) && gives_back_its_crease(met, cut)))
+        same_joint(v, blocking);
     }
     clicks_.push_back(v);
-    sections_.push_back(s);
-    paths_.push_back(std::move(path));
-    lines_.push_back(std::move(line));
+    throughs_.push_back(through);
+    cuts_.push_back(std::move(cut));
   }
 
   // Every accepted cut made at once, with its click, limb and section.
   Joint_cutting_result result() const
   {
     const Indexed_mesh& mesh = finder_.mesh();
-    Cutting_result cut = cut_mesh(mesh, Cut_specification{lines_, {}, source}, cutting_, finder_.source());
+    Cut_specification all{{}, {}, source};
+    for(const Cut& c : cuts_) all.cuts.push_back(c.line);
+    Cutting_result cut = cut_mesh(mesh, all, cutting_, finder_.source());
     Joint_cutting_result r;
     r.mesh = std::move(cut.mesh);
     for(std::size_t i = 0; i < clicks_.size(); ++i) {
@@ -154,9 +172,10 @@ public:
       c.vertex = clicks_[i];
       c.path = cut.paths[i];
       c.length = cut.lengths[i];
-      c.limb_radius = sections_[i].axis.radius;
-      c.shift = std::abs(sections_[i].shift);
-      c.axis = sections_[i].axis.direction;
+      const Section& section = cuts_[i].section;
+      c.limb_radius = section.axis.radius;
+      c.shift = std::abs(section.shift);
+      c.axis = section.axis.direction;
       for(std::size_t k = 0; k + 1 < c.path.size(); ++k) c.centre += mesh.points.row(c.path[k]).transpose();
       c.centre /= double(std::max<std::size_t>(c.path.size() - 1, 1));
       r.cuts.push_back(std::move(c));
@@ -169,48 +188,98 @@ private:
 
   // Through the click when its section passes there, so that cuts which
   // meet at a click are seen to meet.
-  Cut_line line_of(int v, const Section& s) const
+  // Its anchors, or every vertex of the loop (`whole_loop`).
+  Cut_line line_of(int v, const Section& s, bool whole_loop = false) const
   {
     std::vector<int> loop = s.loop;
     const auto at = std::find(loop.begin(), loop.end(), v);
     std::rotate(loop.begin(), at == loop.end() ? loop.begin() : at, loop.end());
-    return Cut_line{anchors(finder_.mesh(), loop, options_.anchors), true, "at vertex " + std::to_string(v)};
+    return Cut_line{whole_loop ? loop : anchors(finder_.mesh(), loop, options_.anchors), true,
+                    "at vertex " + std::to_string(v)};
   }
 
-  // The line traced alone, so that a section whose points cannot be joined
-  // in order is blamed on its click (and skipped) rather than failing all.
-  std::vector<int> traced(int v, const Cut_line& line) const
+  // The cut along section `s` of a click at `v`, traced alone, so that a
+  // section whose points cannot be joined in order is blamed on its click
+  // (and skipped) rather than failing all.
+  Cut traced_cut(int v, Section s, bool whole_loop = false) const
   {
+    Cut c{std::move(s), {}, {}};
+    c.line = line_of(v, c.section, whole_loop);
     try {
-      return cut_mesh(finder_.mesh(), Cut_specification{{line}, {}, source}, cutting_, finder_.source()).paths.front();
+      c.path = cut_mesh(finder_.mesh(), Cut_specification{{c.line}, {}, source}, cutting_, finder_.source()).paths.front();
     } catch(const Input_error& e) {
       finder_.fail(v, "the section across the limb there cannot be traced as a cut: " + e.problem());
     }
+    return c;
   }
 
-  // The first cut already made that `line` (around the limb of `s`) runs
-  // along or crosses: two closed cuts of a sphere that do neither make
+  // The first cut already made (but `except`) that `c` runs along or
+  // crosses: two closed cuts of a sphere that do neither make
   // three regions. Cuts may touch at a vertex: people cut an arm's base
   // ring pinched to a point. Cuts whose sections go around two limbs
   // (around_one_limb()) may also share a few edges, less than a quarter of
   // the shorter: two fingers' bases meet in the web between them, and the
   // cuts either side of a ring where an arm leaves the body meet where the
   // ring narrows (on the 12 PSB meshes, two human cuts more found, none lost).
-  std::size_t conflicting(const std::vector<int>& path, const Cut_line& line, const Section& s) const
+  std::size_t conflicting(const Cut& c, std::size_t except = std::size_t(-1)) const
   {
-    for(std::size_t i = 0; i < paths_.size(); ++i) {
-      if(std::none_of(path.begin(), path.end(), [&](int u) { return on_cut(paths_[i], u); })) continue;
-      if(const std::size_t shared = shared_edges(paths_[i], path); shared > 0)
-        if(around_one_limb(sections_[i], s) || 4 * shared >= std::min(paths_[i].size(), path.size()) - 1) return i;
+    for(std::size_t i = 0; i < cuts_.size(); ++i) {
+      const Cut& made = cuts_[i];
+      if(i == except || std::none_of(c.path.begin(), c.path.end(), [&](int u) { return on_cut(made.path, u); }))
+        continue;
+      if(const std::size_t shared = shared_edges(made.path, c.path); shared > 0)
+        if(around_one_limb(made.section, c.section) || 4 * shared >= std::min(made.path.size(), c.path.size()) - 1)
+          return i;
       try {
-        if(cut_mesh(finder_.mesh(), Cut_specification{{lines_[i], line}, {}, source}, cutting_, finder_.source())
+        if(cut_mesh(finder_.mesh(), Cut_specification{{made.line, c.line}, {}, source}, cutting_, finder_.source())
              .regions == 3)
           continue;
       } catch(const Input_error&) {
       }
       return i;
     }
-    return paths_.size();
+    return cuts_.size();
+  }
+
+  // The loop through `v` around the limb of `through`, snapped to a crease
+  // beside the cut `path` and kept off its edges (traced through every
+  // vertex: between a few anchors the crease-weighted geodesic would step
+  // back onto it), if it follows a crease: its crease-weighted length below
+  // `crease_ratio` of its length. One ring off a finger's joint, on the
+  // smooth tube, that is its length: the click was on that joint. Where an
+  // arm leaves the body, a thin ring lies between two concave creases.
+  std::optional<Cut> off_the_cut(int v, const Section& through, const std::vector<int>& path) const
+  {
+    constexpr double crease_ratio = 0.8;
+    Section s = finder_.snapped(v, through, options_.snap_band, path);
+    if(!(s.weighted < crease_ratio * loop_length(s.loop))) return std::nullopt;
+    try {
+      return traced_cut(v, std::move(s), true);
+    } catch(const Input_error&) {
+      return std::nullopt;
+    }
+  }
+
+  // Cuts `made` again off the cut `c` of a click that lies on it; true if
+  // both then run along or cross no other cut made; false, and nothing
+  // changed, otherwise.
+  bool gives_back_its_crease(std::size_t made, const Cut& c)
+  {
+    std::optional<Cut> own = off_the_cut(clicks_[made], throughs_[made], c.path);
+    if(!own) return false;
+    std::swap(cuts_[made], *own);
+    if(conflicting(cuts_[made], made) == cuts_.size() && conflicting(c) == cuts_.size()) return true;
+    std::swap(cuts_[made], *own);
+    return false;
+  }
+
+  double loop_length(const std::vector<int>& loop) const
+  {
+    const Indexed_mesh& m = finder_.mesh();
+    double length = 0.;
+    for(std::size_t k = 0; k < loop.size(); ++k)
+      length += (m.points.row(loop[(k + 1) % loop.size()]) - m.points.row(loop[k])).norm();
+    return length;
   }
 
   [[noreturn]] void same_joint(int v, std::size_t made) const
@@ -223,9 +292,8 @@ private:
   const Joint_cutting_options& options_;
   Cutting_options cutting_;
   std::vector<int> clicks_;
-  std::vector<Section> sections_;
-  std::vector<std::vector<int>> paths_;
-  std::vector<Cut_line> lines_;
+  std::vector<Section> throughs_; // each click's section before snapping
+  std::vector<Cut> cuts_;
 };
 
 } // namespace

@@ -144,8 +144,10 @@ Section Joint_finder::narrowest_within_range(int v, const Limb_axis& axis) const
 // limb's axis through `v`: a vertex is reached on sheet 0 or 1, and an edge
 // that crosses the half-plane changes the sheet, so the shortest path from
 // `v` on sheet 0 to `v` on sheet 1 goes once around the limb.
-Section Joint_finder::snapped(int v, const Section& s, double band) const
+Section Joint_finder::snapped(int v, const Section& s, double band, const std::vector<int>& avoid) const
 {
+  std::set<std::pair<int, int>> avoided;
+  for(std::size_t k = 0; k + 1 < avoid.size(); ++k) avoided.insert(std::minmax(avoid[k], avoid[k + 1]));
   const Vector d = s.axis.direction.normalized(), e1 = d.unitOrthogonal(), e2 = d.cross(e1);
   const Vector c = s.centre, pv = point(v);
   const auto radial = [&](const Vector& q) { return (q - d.dot(q) * d).norm(); };
@@ -180,7 +182,7 @@ Section Joint_finder::snapped(int v, const Section& s, double band) const
     const int sheet = int(node % 2);
     for(auto h : CGAL::halfedges_around_target(Indexed_surface_mesh::Vertex_index(std::uint32_t(u)), surface_)) {
       const std::size_t w = std::size_t(surface_.source(h));
-      if(phi[w] < 0.) continue;
+      if(phi[w] < 0. || avoided.count(std::minmax(int(u), int(w))) > 0) continue;
       const double jump = phi[w] - phi[u];
       const int next_sheet = sheet + (jump < -M_PI ? 1 : jump > M_PI ? -1 : 0);
       if(next_sheet < 0 || next_sheet > 1) continue;
@@ -193,7 +195,8 @@ Section Joint_finder::snapped(int v, const Section& s, double band) const
       }
     }
   }
-  if(!(distance[target] < s.weighted)) return s;
+  // Kept off a cut, any loop found beats `s`, which may run along it.
+  if(!(distance[target] < (avoided.empty() ? s.weighted : std::numeric_limits<double>::infinity()))) return s;
   Section r = s;
   r.loop.clear();
   for(std::size_t node = previous[target]; node != source; node = previous[node]) r.loop.push_back(int(node / 2));

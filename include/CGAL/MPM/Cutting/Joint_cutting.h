@@ -98,11 +98,15 @@ struct Joint_cutting_result
 /// within 2.5 radii of the axis of a limb thinner than 0.6 times the
 /// section's radius, and the section is not a small loop around that limb),
 /// the narrowest section across the thinner limb within the search range is
-/// snapped too, and the cheaper of the two snapped loops is the cut. When a click's snapped cut runs along or crosses a cut
-/// already made (both clicks snapped to one crease), the section through
-/// the click is taken instead if it goes around the same limb: two cuts a
-/// ring of faces apart bound a thin ring, as people cut where an arm leaves
-/// the body.
+/// snapped too, and the cheaper of the two snapped loops is the cut. When a
+/// click's snapped cut runs along or crosses a cut already made (both
+/// clicks snapped to one crease), the section through the click is taken
+/// instead if it goes around the same limb, else the click's loop snapped
+/// again kept off that cut's edges if it follows a crease of its own
+/// (crease-weighted length below 0.8 of its length); when the cut made runs
+/// through the click, the earlier click's loop is snapped off the new cut
+/// instead, on the same condition: two cuts a ring of faces apart bound a
+/// thin ring, as people cut where an arm leaves the body.
 ///
 /// Throws `Input_error` naming the vertex for: a vertex out of range or in
 /// no face; a vertex on the body (no limb axis passes under it); a section

@@ -60,8 +60,9 @@ public:
   // `v`) of least crease-weighted length, within `band` limb radii of the
   // section's plane and one and a half times its reach from the axis: the
   // crease a person follows when cutting there, which may be oblique to
-  // the limb or curved. `s` itself when no loop there is cheaper.
-  Section snapped(int v, const Section& s, double band) const;
+  // the limb or curved. `s` itself when no loop there is cheaper. The loop
+  // does not step along an edge of the closed path `avoid` (a cut made).
+  Section snapped(int v, const Section& s, double band, const std::vector<int>& avoid = {}) const;
 
   // The closed section by the plane through `v` moved by `t` along the axis,
   // with the given normal: the loop through `v` when `through_click` and there
