@@ -141,7 +141,7 @@ public:
       // made when that follows a crease of its own (the other side of the
       // ring). When the cut made runs through this click instead (it took
       // the crease clicked now), the first click's cut is snapped off this
-      // one, so that the order of the two clicks does not matter.
+      // one, so that either order of the two clicks can give both cuts.
       // Otherwise the click was on the joint of the cut made.
       if(around_one_limb(cuts_[met].section, through))
         if(Cut c = traced_cut(v, through); (blocking = conflicting(c)) == cuts_.size()) cut = std::move(c);
