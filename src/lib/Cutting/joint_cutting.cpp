@@ -19,12 +19,20 @@ namespace {
 
 using internal::vertex_name;
 
-// `count` vertices of the loop spread evenly along its length.
-std::vector<int> anchors(const Indexed_mesh& m, const std::vector<int>& loop, int count)
+// The length along the closed loop to each of its vertices, and to its
+// first again (last entry: the loop's length).
+std::vector<double> arc_lengths(const Indexed_mesh& m, const std::vector<int>& loop)
 {
   std::vector<double> at{0.};
   for(std::size_t k = 0; k < loop.size(); ++k)
     at.push_back(at.back() + (m.points.row(loop[(k + 1) % loop.size()]) - m.points.row(loop[k])).norm());
+  return at;
+}
+
+// `count` vertices of the loop spread evenly along its length.
+std::vector<int> anchors(const Indexed_mesh& m, const std::vector<int>& loop, int count)
+{
+  const std::vector<double> at = arc_lengths(m, loop);
   std::vector<int> r;
   std::size_t k = 0;
   for(int i = 0; i < count; ++i) {
@@ -206,7 +214,8 @@ private:
     Cut c{std::move(s), {}, {}};
     c.line = line_of(v, c.section, whole_loop);
     try {
-      c.path = cut_mesh(finder_.mesh(), Cut_specification{{c.line}, {}, source}, cutting_, finder_.source()).paths.front();
+      c.path =
+        cut_mesh(finder_.mesh(), Cut_specification{{c.line}, {}, source}, cutting_, finder_.source()).paths.front();
     } catch(const Input_error& e) {
       finder_.fail(v, "the section across the limb there cannot be traced as a cut: " + e.problem());
     }
@@ -252,7 +261,7 @@ private:
   {
     constexpr double crease_ratio = 0.8;
     Section s = finder_.snapped(v, through, options_.snap_band, path);
-    if(!(s.weighted < crease_ratio * loop_length(s.loop))) return std::nullopt;
+    if(!(s.weighted < crease_ratio * arc_lengths(finder_.mesh(), s.loop).back())) return std::nullopt;
     try {
       return traced_cut(v, std::move(s), true);
     } catch(const Input_error&) {
@@ -271,15 +280,6 @@ private:
     if(conflicting(cuts_[made], made) == cuts_.size() && conflicting(c) == cuts_.size()) return true;
     std::swap(cuts_[made], *own);
     return false;
-  }
-
-  double loop_length(const std::vector<int>& loop) const
-  {
-    const Indexed_mesh& m = finder_.mesh();
-    double length = 0.;
-    for(std::size_t k = 0; k < loop.size(); ++k)
-      length += (m.points.row(loop[(k + 1) % loop.size()]) - m.points.row(loop[k])).norm();
-    return length;
   }
 
   [[noreturn]] void same_joint(int v, std::size_t made) const

@@ -110,7 +110,8 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
         derivative += coordinates[cc.offset + l] * schur.h_blocks[mode * dm + cc.offset + l];
       derivative = rotations[own] * derivative;
       if(c == own) derivative += in_own;
-      for(int i = 0; i < 3; ++i) mixed(3 * c + i, Eigen::Index(mode)) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
+      for(int i = 0; i < 3; ++i)
+        mixed(3 * c + i, Eigen::Index(mode)) = -2. * frobenius(a[3 * std::size_t(c) + i], derivative);
     }
   });
   // mixed (2 S)^-1 mixed^T = 0.5 Y^T Y with Y = L^-1 mixed^T, S = L L^T
