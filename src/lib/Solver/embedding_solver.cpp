@@ -39,12 +39,14 @@ void Embedding_solver::set_handles(const std::vector<int>& vertices, const Point
     seen[vertices[h]] = true;
     if(!targets.row(h).allFinite()) throw Input_error("handles", element, "target is not finite");
   }
-  if(vertices != d.handle_vertices && !d.update_handle_set(vertices)) d.factored = false;
+  // A drag moves the targets of the same handles, which leaves the anchors.
+  const bool new_set = vertices != d.handle_vertices;
+  if(new_set && !d.update_handle_set(vertices)) d.factored = false;
   d.handle_vertices = vertices;
   d.handle_targets = targets;
   d.handle_targets.rowwise() -= d.origin;
   d.handle_terms_ready = false;
-  d.compute_anchor();
+  if(new_set) d.compute_anchor();
 }
 
 void Embedding_solver::clear_handles() { set_handles({}, Point_matrix(0, 3)); }
@@ -117,7 +119,17 @@ Solve_report Embedding_solver::solve_from_current_state()
   // Newton's step leaves nothing to add to: 3-11 with both).
   const bool newton = d.global_step->implicit_positions() && d.options.newton &&
                       d.options.rotations == Rotations::per_cluster;
-  if(newton && d.implicit && d.options.predict_rotations) previous = d.start_at_predicted_rotations(previous);
+  // A prediction taken leaves the state settled at the predicted rotations:
+  // the first iteration is then Newton's step alone (the local/global step
+  // before it was a sixth of a 64k-vertex drag frame and moved the energy
+  // less than the step after it).
+  bool settled = false;
+  if(newton && d.implicit && d.options.predict_rotations)
+  {
+    const double unpredicted = previous;
+    previous = d.start_at_predicted_rotations(previous);
+    settled = previous < unpredicted;
+  }
   double damping = 1e-6;
   // Otherwise L-BFGS on the rotations (reduced step only). Memory measured
   // on the 36 real-mesh edits: 3 pairs 8% more iterations than 8, 20 pairs
@@ -141,7 +153,8 @@ Solve_report Embedding_solver::solve_from_current_state()
   {
     internal::throw_if_cancelled(d.options.cancel, "solve");
     const std::vector<Eigen::Matrix3d> start = d.rotations;
-    double e = iterate();
+    const bool newton_only = settled && it == 0;
+    double e = newton_only ? previous : iterate();
     const Eigen::VectorXd g = d.packed_state();
     const Eigen::VectorXd candidate = anderson.next(x, g);
     x = g;
@@ -171,6 +184,14 @@ Solve_report Embedding_solver::solve_from_current_state()
     {
       const double improved = d.newton_improve(e, damping, &remaining);
       if(improved < e) x = d.packed_state();
+      // Newton's step alone failing says nothing of convergence: the
+      // iteration is taken again with the local/global step.
+      else if(newton_only)
+      {
+        settled = false;
+        --it;
+        continue;
+      }
       e = improved;
     }
     d.check_not_diverging(e, best, rises, it + 1);

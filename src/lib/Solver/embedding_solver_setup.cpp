@@ -207,7 +207,18 @@ Point_matrix Embedding_solver::Impl::target_shape(const Cluster_data& c, const E
 // nothing else. Anchoring every vertex also pulled the piece's orientation
 // back toward rest, ever more weakly: an edit that turns parts (symmetrize)
 // then crept for a hundred iterations after its shape had settled.
-void Embedding_solver::Impl::compute_anchor() { anchor = anchor_for(handle_vertices); }
+void Embedding_solver::Impl::compute_anchor()
+{
+  anchor = anchor_for(handle_vertices);
+  anchored.clear();
+  anchor_constant = 0.;
+  for(int v = 0; v < n; ++v)
+    if(anchor[v] > 0)
+    {
+      anchored.push_back(v);
+      anchor_constant += anchor[v] * mesh.points.row(v).squaredNorm();
+    }
+}
 
 Eigen::VectorXd Embedding_solver::Impl::anchor_for(const std::vector<int>& handles) const
 {
@@ -293,8 +304,7 @@ bool Embedding_solver::Impl::update_handle_set(const std::vector<int>& vertices)
 Point_matrix Embedding_solver::Impl::anchor_right_hand_side() const
 {
   Point_matrix b = Point_matrix::Zero(n, 3);
-  for(int v = 0; v < n; ++v)
-    if(anchor[v] > 0) b.row(v) = anchor[v] * mesh.points.row(v);
+  for(int v : anchored) b.row(v) = anchor[v] * mesh.points.row(v);
   return b;
 }
 
@@ -339,8 +349,7 @@ void Embedding_solver::Impl::prepare_handle_terms()
   const double handle_weight = options.handle_weight * mean_diagonal;
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     b0.row(handle_vertices[h]) += handle_weight * handle_targets.row(h);
-  handle_constant = 0.;
-  for(int v = 0; v < n; ++v) handle_constant += anchor[v] * mesh.points.row(v).squaredNorm();
+  handle_constant = anchor_constant;
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     handle_constant += handle_weight * handle_targets.row(h).squaredNorm();
   if(global_step->uses_blocks()) set_block_handle_terms();

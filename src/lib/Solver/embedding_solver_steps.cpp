@@ -406,8 +406,7 @@ double Embedding_solver::Impl::energy_of(const Point_matrix& v, const Eigen::Vec
   const double handle_weight = options.handle_weight * mean_diagonal;
   for(std::size_t h = 0; h < handle_vertices.size(); ++h)
     e += handle_weight * (v.row(handle_vertices[h]) - handle_targets.row(h)).squaredNorm();
-  for(int i = 0; i < n; ++i)
-    if(anchor[i] > 0) e += anchor[i] * (v.row(i) - mesh.points.row(i)).squaredNorm();
+  for(int i : anchored) e += anchor[i] * (v.row(i) - mesh.points.row(i)).squaredNorm();
   return e;
 }
 

@@ -106,6 +106,8 @@ struct Embedding_solver::Impl
   bool factored = false;
   bool handle_terms_ready = false;
   Eigen::VectorXd anchor;         // per-vertex anchor weight
+  std::vector<int> anchored;      // the vertices of positive anchor weight
+  double anchor_constant = 0.;    // sum over anchored vertices of weight * |rest point|^2
   internal::embedding::Schur_blocks schur; // with the schur and reduced steps
   Eigen::MatrixXd coupling;       // coupled-coordinates term, total_modes x total_modes
   double handle_constant = 0.;    // sum w_h |y_h|^2 + anchors
