@@ -48,7 +48,7 @@ Eigen::SparseMatrix<double> vertex_block_like(int vertices)
 TEST(Ldlt_row_solver, agrees_with_eigens_solve)
 {
   const Eigen::SparseMatrix<double> a = vertex_block_like(3000);
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+  internal::Vertex_ldlt ldlt(a);
   ASSERT_EQ(ldlt.info(), Eigen::Success);
   for(const int parts : {1, 2, 3})
   {
@@ -93,7 +93,7 @@ TEST(Ldlt_inverse_gram, agrees_with_solving_every_column)
   for(std::size_t o = 0; o < operands.size(); ++o)
     for(std::size_t i = 0; i < operands[o].rows.size(); ++i)
       x.block(operands[o].rows[i], offset[o], 1, operands[o].values.cols()) += operands[o].values.row(Eigen::Index(i));
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+  internal::Vertex_ldlt ldlt(a);
   const Eigen::MatrixXd eigen = x.transpose() * ldlt.solve(x);
   const Eigen::MatrixXd reference = internal::embedding::inverse_gram_by_solves(*block, operands);
   const Eigen::MatrixXd tree = block->inverse_gram(operands);
@@ -102,4 +102,31 @@ TEST(Ldlt_inverse_gram, agrees_with_solving_every_column)
   EXPECT_LE((reference - eigen).norm(), 1e-12 * eigen.norm());
   EXPECT_LE((tree - reference).norm(), 1e-12 * reference.norm());
   EXPECT_EQ(tree, tree.transpose());
+}
+
+// The vertex block's ordering is a permutation that gives the factor no
+// more entries than Eigen's AMD (with CHOLMOD, SuiteSparse's AMD with the
+// elimination tree postordered: fewer), and the same solutions.
+TEST(Vertex_ordering, fills_no_more_than_eigens_amd)
+{
+  const Eigen::SparseMatrix<double> a = vertex_block_like(3000);
+  internal::Vertex_ordering::PermutationType inverse;
+  internal::Vertex_ordering()(Eigen::SparseMatrix<double>(a), inverse);
+  ASSERT_EQ(inverse.size(), a.rows());
+  std::vector<int> rows(inverse.indices().data(), inverse.indices().data() + inverse.size());
+  std::sort(rows.begin(), rows.end());
+  for(int i = 0; i < int(rows.size()); ++i) ASSERT_EQ(rows[std::size_t(i)], i);
+
+  const internal::Vertex_ldlt ours(a);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> eigens(a);
+  ASSERT_EQ(ours.info(), Eigen::Success);
+  const Eigen::Index fill = ours.matrixL().nestedExpression().nonZeros();
+  const Eigen::Index eigens_fill = eigens.matrixL().nestedExpression().nonZeros();
+#ifdef CGAL_MPM_HAS_CHOLMOD
+  EXPECT_LT(fill, eigens_fill);
+#else
+  EXPECT_EQ(fill, eigens_fill);
+#endif
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(a.rows(), 3);
+  EXPECT_LE((ours.solve(b) - eigens.solve(b)).norm(), 1e-12 * eigens.solve(b).norm());
 }

@@ -28,7 +28,7 @@ struct Forward_solution
 class Forward_solver
 {
 public:
-  explicit Forward_solver(const Eigen::SimplicialLDLT<Sparse>& ldlt)
+  explicit Forward_solver(const Vertex_ldlt& ldlt)
     : ldlt_(ldlt), l_(compressed(ldlt.matrixL().nestedExpression(), copy_)), d_(ldlt.vectorD()), n_(int(l_.rows()))
   {
     const int* const outer = l_.outerIndexPtr();
@@ -94,7 +94,7 @@ private:
     return ldlt_.permutationP().size() > 0 ? ldlt_.permutationP().indices()[row] : row;
   }
 
-  const Eigen::SimplicialLDLT<Sparse>& ldlt_;
+  const Vertex_ldlt& ldlt_;
   Sparse copy_;
   const Sparse& l_;
   Eigen::VectorXd d_; // vectorD() returns a copy
@@ -130,7 +130,7 @@ std::vector<Eigen::Index> column_offsets(const std::vector<Local_columns>& opera
   return offsets;
 }
 
-Eigen::MatrixXd ldlt_inverse_gram(const Eigen::SimplicialLDLT<Sparse>& ldlt, const std::vector<Local_columns>& operands)
+Eigen::MatrixXd ldlt_inverse_gram(const Vertex_ldlt& ldlt, const std::vector<Local_columns>& operands)
 {
   const Forward_solver forward(ldlt);
   std::vector<Forward_solution> solutions(operands.size());

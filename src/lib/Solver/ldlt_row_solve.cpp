@@ -84,14 +84,11 @@ void solve_columns(const Factor_view& l, const Eigen::PermutationMatrix<Eigen::D
     for(std::size_t t = 0; t < top.size(); ++t)
       for(Eigen::Index k = 0; k < w; ++k) rows[top[t] * w + k] += buffer[t * std::size_t(w) + std::size_t(k)];
   for(int j : top) forward(j, nullptr);
-  for(Eigen::Index j = 0; j < n; ++j)
-  {
-    const double inverse = 1. / l.d[j];
-    for(Eigen::Index k = 0; k < w; ++k) rows[j * w + k] *= inverse;
-  }
+  // D^-1 is applied to a row as the backward pass reaches it.
   const auto backward = [&](int j) {
     double yj[Width > 0 ? Width : max_width];
-    for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k];
+    const double inverse = 1. / l.d[j];
+    for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k] * inverse;
     for(int q = l.below(j); q < l.outer[j + 1]; ++q)
     {
       const double* const yi = rows + Eigen::Index(l.inner[q]) * w;
@@ -186,7 +183,7 @@ Ldlt_row_solver::Partition split_tree(const Factor_view& l, int n, int count)
 
 } // namespace
 
-Ldlt_row_solver::Ldlt_row_solver(const Eigen::SimplicialLDLT<Sparse>& ldlt, int parts)
+Ldlt_row_solver::Ldlt_row_solver(const Vertex_ldlt& ldlt, int parts)
   : ldlt_(&ldlt)
 {
   const Sparse& factor = ldlt.matrixL().nestedExpression();

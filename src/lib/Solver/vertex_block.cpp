@@ -49,7 +49,7 @@ std::unique_ptr<Vertex_block> make_vertex_block(Sparse_solver which)
 #else
   (void)which;
 #endif
-  return std::make_unique<Factored_vertex_block<CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Sparse>>>>();
+  return std::make_unique<Factored_vertex_block<CGAL::Eigen_solver_traits<Vertex_ldlt>>>();
 }
 
 } // namespace embedding

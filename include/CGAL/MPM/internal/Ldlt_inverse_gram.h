@@ -3,8 +3,9 @@
 #ifndef CGAL_MPM_INTERNAL_LDLT_INVERSE_GRAM_H
 #define CGAL_MPM_INTERNAL_LDLT_INVERSE_GRAM_H
 
+#include <CGAL/MPM/internal/Vertex_ordering.h>
+
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <vector>
@@ -34,7 +35,7 @@ std::vector<Eigen::Index> column_offsets(const std::vector<Local_columns>& opera
 /// 65 cluster operands: a tenth of the flops of solving every column
 /// through the whole factor). Operands are solved, and pairs multiplied,
 /// in parallel (TBB). The reference is `inverse_gram_by_solves()`.
-Eigen::MatrixXd ldlt_inverse_gram(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt,
+Eigen::MatrixXd ldlt_inverse_gram(const Vertex_ldlt& ldlt,
                                   const std::vector<Local_columns>& operands);
 
 } // namespace internal

@@ -3,7 +3,8 @@
 #ifndef CGAL_MPM_INTERNAL_LDLT_ROW_SOLVE_H
 #define CGAL_MPM_INTERNAL_LDLT_ROW_SOLVE_H
 
-#include <Eigen/SparseCholesky>
+#include <CGAL/MPM/internal/Vertex_ordering.h>
+
 #include <Eigen/SparseCore>
 
 #include <vector>
@@ -12,7 +13,7 @@ namespace CGAL {
 namespace MPM {
 namespace internal {
 
-// `A^-1 b` from Eigen's `SimplicialLDLT` factor of `A` (which solves the
+// `A^-1 b` from the `SimplicialLDLT` factor of `A` (which solves the
 // same, `ldlt.solve(b)`, the reference), with every column of `b` carried
 // through one pass over the factor. The triangular solves of a large mesh
 // are bound by reading `L`, which the column-by-column solve reads once per
@@ -29,7 +30,7 @@ class Ldlt_row_solver
 public:
   /// Keeps a reference to `ldlt`, which must outlive the solver and not be
   /// refactored; splits its elimination tree into `parts` (1: no split).
-  Ldlt_row_solver(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt, int parts);
+  Ldlt_row_solver(const Vertex_ldlt& ldlt, int parts);
   /// `A^-1 b`.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
   /// The parts the tree was split into (fewer than asked when it has no
@@ -47,7 +48,7 @@ public:
   };
 
 private:
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* ldlt_;
+  const Vertex_ldlt* ldlt_;
   Eigen::SparseMatrix<double> compressed_; // when Eigen's factor is not compressed
   Eigen::VectorXd d_;                      // Eigen hands D out by value
   Partition whole_, split_; // one part without a top; the tree's split

@@ -104,7 +104,7 @@ public:
     matrix_ = std::make_unique<typename SolverTraits::Matrix>(system_);
     typename SolverTraits::NT determinant;
     if(!traits_.factor(*matrix_, determinant)) return false;
-    if constexpr(std::is_same_v<typename SolverTraits::Solver, Eigen::SimplicialLDLT<Sparse>>)
+    if constexpr(std::is_same_v<typename SolverTraits::Solver, Vertex_ldlt>)
     {
       // Below a few thousand rows a pass is too short to share between cores.
       int parts = 1;
@@ -165,7 +165,7 @@ public:
   // carries all columns through one pass over it (`Ldlt_row_solver`).
   Eigen::MatrixXd solve_factored(const Eigen::MatrixXd& b) const override
   {
-    if constexpr(std::is_same_v<typename SolverTraits::Solver, Eigen::SimplicialLDLT<Sparse>>)
+    if constexpr(std::is_same_v<typename SolverTraits::Solver, Vertex_ldlt>)
       return row_solver_->solve(b);
 #ifdef CGAL_LINKED_WITH_TBB
     if(b.rows() > 20000 && b.cols() > 1)
@@ -217,7 +217,7 @@ Eigen::MatrixXd inverse_gram_by_solves(const Vertex_block& block, const std::vec
 template <class SolverTraits>
 Eigen::MatrixXd Factored_vertex_block<SolverTraits>::inverse_gram(const std::vector<Local_columns>& operands) const
 {
-  if constexpr(std::is_same_v<typename SolverTraits::Solver, Eigen::SimplicialLDLT<Sparse>>)
+  if constexpr(std::is_same_v<typename SolverTraits::Solver, Vertex_ldlt>)
     return ldlt_inverse_gram(traits_.solver(), operands);
   return inverse_gram_by_solves(*this, operands);
 }
