@@ -58,8 +58,8 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
   const auto w = [&](int c, int d) -> const Eigen::Matrix3d& { return w_blocks[std::size_t(c) * nc + d]; };
 
   Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(3 * nc, 3 * nc);
-  for(int c = 0; c < nc; ++c)
-  {
+  // Cluster c writes the blocks (c, d >= c) and their transposes: clusters in parallel.
+  internal::parallel_for_each_index(nc, [&](int c) {
     const Eigen::Matrix3d covariance = fit_covariance(c, rotations);
     for(int i = 0; i < 3; ++i)
       for(int j = 0; j < 3; ++j)
@@ -83,7 +83,7 @@ Eigen::MatrixXd Embedding_solver::Impl::reduced_hessian() const
         }
       }
     }
-  }
+  });
   if(dm == 0) return 0.5 * (hessian + hessian.transpose());
 
   // F_wl: -2 <R_c [e_i]x, dC_c / dlambda_a>, with (from w_of())

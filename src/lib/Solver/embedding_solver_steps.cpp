@@ -30,16 +30,15 @@ void Embedding_solver::Impl::coordinate_system(Eigen::MatrixXd& s, Eigen::Vector
   s = schur.s0;
   r = schur.r0;
   // S is symmetric: its lower triangle, mirrored (the blocks are read on
-  // every settle of the coordinates, a few per drag frame).
-  for(int a = 0; a < dm; ++a)
-  {
+  // every settle of the coordinates, a few per drag frame). Rows in parallel.
+  internal::parallel_for_each_index(dm, [&](int a) {
     const int c = cluster_of_mode[a];
     for(int b = 0; b <= a; ++b)
       s(a, b) -= trace_product(schur.h_blocks[std::size_t(a) * dm + b], relative[std::size_t(c) * nc + cluster_of_mode[b]]);
     for(int d = 0; d < nc; ++d)
       r[a] += trace_product(schur.g_blocks[std::size_t(a) * nc + d], relative[std::size_t(c) * nc + d]);
     r[a] += trace_product(schur.z_blocks[a], rotations[c]);
-  }
+  });
   s = Eigen::MatrixXd(s.selfadjointView<Eigen::Lower>());
 }
 
@@ -100,8 +99,8 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
 {
   const int nc = static_cast<int>(clusters.size()), dm = total_modes;
   std::vector<Eigen::Matrix3d> w(std::size_t(nc) * nc + nc);
-  for(int c = 0; c < nc; ++c)
-  {
+  // Cluster c writes the pairs (c, d >= c) and their transposes: clusters in parallel.
+  internal::parallel_for_each_index(nc, [&](int c) {
     const Cluster_data& cc = clusters[c];
     for(int d = c; d < nc; ++d)
     {
@@ -122,7 +121,7 @@ std::vector<Eigen::Matrix3d> Embedding_solver::Impl::w_of(const Eigen::VectorXd&
     Eigen::Matrix3d z = schur.zlm_blocks[c].transpose();
     for(int k = 0; k < cc.number_of_modes(); ++k) z += lambda[cc.offset + k] * schur.z_blocks[cc.offset + k];
     w[std::size_t(nc) * nc + c] = z;
-  }
+  });
   return w;
 }
 
@@ -362,32 +361,36 @@ const Point_matrix& Embedding_solver::Impl::materialized_positions()
   return positions;
 }
 
-// One cluster's edge and prior terms. With one rotation per cluster the
-// target's edge vectors are turned once per vertex rather than per edge,
-// and the positions are read as rows of a local copy (a column-major
-// `Point_matrix` keeps a vertex's coordinates a column apart).
+// One cluster's edge and prior terms. With one rotation per cluster each
+// vertex's offset from its turned target is computed once, and an edge's
+// term is the difference of two offsets; the positions are read as rows of
+// a local copy (a column-major `Point_matrix` keeps a vertex's coordinates
+// a column apart).
 double Embedding_solver::Impl::cluster_energy(std::size_t c, const Point_matrix& v, const Eigen::VectorXd& lambda) const
 {
   const Cluster_data& d = clusters[c];
   const Eigen::Index size = Eigen::Index(d.vertices.size());
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
-  Rows at(size, 3);
-  for(Eigen::Index i = 0; i < size; ++i) at.row(i) = v.row(d.vertices[std::size_t(i)]);
   const Point_matrix m = target_shape(d, lambda);
   double e = 0.;
   if(rotation_groups.per_cluster())
   {
-    const Rows turned = m * rotation_groups.cluster_transform(int(c), rotations).transpose();
-    for(const Weighted_edge& edge : d.edges)
-      e += edge.w * (at.row(edge.i) - at.row(edge.j) - turned.row(edge.i) + turned.row(edge.j)).squaredNorm();
+    Rows offset(size, 3);
+    offset.noalias() = -m * rotation_groups.cluster_transform(int(c), rotations).transpose();
+    for(Eigen::Index i = 0; i < size; ++i) offset.row(i) += v.row(d.vertices[std::size_t(i)]);
+    for(const Weighted_edge& edge : d.edges) e += edge.w * (offset.row(edge.i) - offset.row(edge.j)).squaredNorm();
   }
   else
+  {
+    Rows at(size, 3);
+    for(Eigen::Index i = 0; i < size; ++i) at.row(i) = v.row(d.vertices[std::size_t(i)]);
     for(const Weighted_edge& edge : d.edges)
     {
       const Eigen::Matrix3d transform = rotation_groups.edge_transform(static_cast<int>(c), edge, rotations);
       e += edge.w * ((at.row(edge.i) - at.row(edge.j)).transpose() - transform * (m.row(edge.i) - m.row(edge.j)).transpose())
                       .squaredNorm();
     }
+  }
   for(int k = 0; k < d.number_of_modes(); ++k) e += d.prior[k] * lambda[d.offset + k] * lambda[d.offset + k];
   return e;
 }
