@@ -76,9 +76,11 @@ def main():
                              check=True, capture_output=True, text=True).stdout
         cpp.append(json.loads(out))
         python.append(python_drags(model, args.drags))
-    # The same drags (the step differs in its last bits, computed by numpy
-    # here, by Eigen there, so a tolerance stop can move by an iteration).
-    assert abs(cpp[0]["iterations"] - python[0]["iterations"]) <= 0.01 * cpp[0]["iterations"], (cpp[0], python[0])
+    # The same drags: the positions agree (the step differs in its last
+    # bits, computed by numpy here, by Eigen there, so a tolerance stop can
+    # move by an iteration: 116 against 119 in 100 drags, measured when a
+    # frame's first iteration became Newton's step alone).
+    assert abs(cpp[0]["iterations"] - python[0]["iterations"]) <= 0.05 * cpp[0]["iterations"], (cpp[0], python[0])
     assert abs(cpp[0]["checksum"] - python[0]["checksum"]) <= 1e-8 * abs(cpp[0]["checksum"])
     result = {
         "vertices": cpp[0]["vertices"],
