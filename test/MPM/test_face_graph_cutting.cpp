@@ -5,7 +5,8 @@
 // joints proposed with no click write their labels into a face property map
 // of a Surface_mesh or a Polyhedron_3, equal to the indexed-mesh path's; the
 // part types proposed from that map are the indexed path's too, on
-// OpenMesh as well when it is installed. A click
+// OpenMesh as well when it is installed; so are the cuts of a
+// Face_graph_joint_cutter, click after click. A click
 // that is not a vertex of the mesh, or lies on the body, is an Input_error.
 #include <CGAL/MPM/Cutting/Face_graph_cutting.h>
 #include <CGAL/MPM/Cutting/Segmentation_measures.h>
@@ -84,6 +85,20 @@ void expect_indexed_cuts()
   ASSERT_EQ(c.cuts.size(), ref.clicked.cuts.size());
   for(std::size_t k = 0; k < c.cuts.size(); ++k) EXPECT_EQ(c.cuts[k].path, ref.clicked.cuts[k].path);
   EXPECT_EQ(face_labels_from_map(g, clicked), ref.clicked.mesh.face_labels);
+
+  // Click after click through one cutter (the skeleton computed once): the
+  // clicks so far each give their cut, and all of them the cuts above.
+  const Face_graph_joint_cutter<Mesh> cutter(g);
+  auto step = get(CGAL::dynamic_face_property_t<int>(), g);
+  const std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> half(clicks.begin(),
+                                                                                 clicks.begin() + clicks.size() / 2);
+  EXPECT_EQ(cutter.cut(half, step).cuts.size(), half.size());
+  EXPECT_EQ(face_labels_from_map(g, step).size(), ref.clicked.mesh.face_labels.size());
+  EXPECT_NE(face_labels_from_map(g, step), ref.clicked.mesh.face_labels);
+  const Joint_cutting_result all = cutter.cut(clicks, step);
+  ASSERT_EQ(all.cuts.size(), ref.clicked.cuts.size());
+  for(std::size_t k = 0; k < all.cuts.size(); ++k) EXPECT_EQ(all.cuts[k].path, ref.clicked.cuts[k].path);
+  EXPECT_EQ(face_labels_from_map(g, step), ref.clicked.mesh.face_labels);
 
   const Part_type_proposal types = propose_part_types(g, proposed);
   EXPECT_EQ(types.annotation.part_type_of_label, ref.types.annotation.part_type_of_label);

@@ -10,10 +10,30 @@
 #include <CGAL/MPM/Input_error.h>
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
 namespace MPM {
+
+namespace internal {
+
+// The index in `vertices(g)` of each click, given the `vertex_order()` of
+// `g`; a click that is not a vertex of `g` is an `Input_error`.
+template <class VertexIndex, class VertexRange>
+std::vector<int> click_indices(const VertexIndex& index, const VertexRange& clicks)
+{
+  std::vector<int> at;
+  for(auto v : clicks) {
+    const auto i = index.find(v);
+    if(i == index.end())
+      throw Input_error("face graph", "click " + std::to_string(at.size()), "is not a vertex of the mesh");
+    at.push_back(i->second);
+  }
+  return at;
+}
+
+} // namespace internal
 
 /// \ingroup PkgMPMRef
 /// Cuts the triangle mesh `g` along the cutting lines of `cuts` (vertex
@@ -55,18 +75,55 @@ Joint_cutting_result cut_at_vertices(const FaceGraph& g, const VertexRange& clic
                                      const Joint_cutting_options& options = Joint_cutting_options(),
                                      const NamedParameters& np = parameters::default_values())
 {
-  const auto index = vertex_order(g);
-  std::vector<int> at;
-  for(auto v : clicks) {
-    const auto i = index.find(v);
-    if(i == index.end())
-      throw Input_error("face graph", "click " + std::to_string(at.size()), "is not a vertex of the mesh");
-    at.push_back(i->second);
-  }
-  Joint_cutting_result cut = cut_at_vertices(to_indexed_mesh(g, np), at, options, "face graph");
+  Joint_cutting_result cut =
+    cut_at_vertices(to_indexed_mesh(g, np), internal::click_indices(vertex_order(g), clicks), options, "face graph");
   write_face_labels(cut.mesh.face_labels, g, face_labels);
   return cut;
 }
+
+/// \ingroup PkgMPMRef
+/// `Joint_cutter` on the user's mesh: `cut_at_vertices()` over the face
+/// graph `g`, click after click, with the curve skeleton and the crease
+/// weights computed once, when the cutter is made (an interactive tool
+/// re-cuts at each new click without them). The cutter keeps its own copy
+/// of the points and triangles; `g` must outlive it, and its vertices and
+/// faces must not change meanwhile (the cuts are found on the mesh as it
+/// was given).
+///
+/// \tparam FaceGraph a model of `FaceListGraph`
+template <class FaceGraph>
+class Face_graph_joint_cutter
+{
+public:
+  /// Named parameters: `vertex_point_map`. Throws `Input_error` as
+  /// `Joint_cutter`'s constructor does.
+  template <class NamedParameters = parameters::Default_named_parameters>
+  explicit Face_graph_joint_cutter(const FaceGraph& g, const Joint_cutting_options& options = Joint_cutting_options(),
+                                   const NamedParameters& np = parameters::default_values())
+    : g_(g), index_(vertex_order(g)), mesh_(to_indexed_mesh(g, np)), cutter_(mesh_, options, "face graph")
+  {
+  }
+  // The cutter refers to the copy of the mesh it holds.
+  Face_graph_joint_cutter(const Face_graph_joint_cutter&) = delete;
+  Face_graph_joint_cutter& operator=(const Face_graph_joint_cutter&) = delete;
+
+  /// The cuts at `clicks` (vertex descriptors of `g`), as `cut_at_vertices()`
+  /// over a face graph gives them; writes the label of each face into
+  /// `face_labels` (a `WritablePropertyMap` from the face descriptor to `int`).
+  template <class VertexRange, class FaceLabelMap>
+  Joint_cutting_result cut(const VertexRange& clicks, FaceLabelMap face_labels) const
+  {
+    Joint_cutting_result cut = cutter_.cut(internal::click_indices(index_, clicks));
+    write_face_labels(cut.mesh.face_labels, g_, face_labels);
+    return cut;
+  }
+
+private:
+  const FaceGraph& g_;
+  std::unordered_map<typename boost::graph_traits<FaceGraph>::vertex_descriptor, int> index_;
+  Indexed_mesh mesh_;
+  Joint_cutter cutter_;
+};
 
 /// \ingroup PkgMPMRef
 /// Joints proposed automatically on the user's mesh: cuts the closed
