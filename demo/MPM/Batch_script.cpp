@@ -435,9 +435,9 @@ private:
   }
 
   // Drags handle 0 back and forth (0.2% of the diagonal per frame, turning
-  // every 10 frames), each frame solved and painted before the next, and
-  // prints the mean solver frame and the mean time from the drag to the end
-  // of the paint that showed it.
+  // every 10 frames), each frame solved and on the screen before the next,
+  // and prints the mean solver frame and the mean time from the drag to the
+  // window's swap that showed it.
   void profile_drag(int frames)
   {
     if(frames < 1) throw Script_error("profile-drag needs at least one frame");
@@ -451,14 +451,15 @@ private:
       session_.drag_handle(0, ((i / 10) % 2 == 0 ? 1. : -1.) * step);
       settle();
       if(session_.frame_awaits_display()) window_.viewer().repaint();
+      if(!session_.wait_until_shown(batch_timeout_ms))
+        throw Script_error("frame " + std::to_string(i) + " was not shown (is the window on a display?)");
       const Solve_frame& f = session_.last_frame();
-      if(f.shown_ms < 0.) throw Script_error("frame " + std::to_string(i) + " was not shown");
       solver_ms += f.ms;
       shown_ms += f.shown_ms;
       paint_ms += f.paint_ms;
     }
     std::cout << "  " << frames << " frames of " << p.rows() << " vertices: solver " << solver_ms / frames
-              << " ms, shown " << shown_ms / frames << " ms after the drag (display adds "
+              << " ms, on the screen " << shown_ms / frames << " ms after the drag (display adds "
               << (shown_ms - solver_ms) / frames << " ms, of which the paint " << paint_ms / frames << " ms)\n";
   }
 

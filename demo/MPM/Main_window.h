@@ -11,6 +11,7 @@
 #include "Viewer.h"
 
 #include <QMainWindow>
+#include <QTimer>
 
 #include <functional>
 
@@ -67,6 +68,7 @@ private:
   QCheckBox* arap_ = nullptr;
   QLabel* part_label_ = nullptr;
   QLabel* solver_label_ = nullptr;
+  QTimer status_refresh_; // shows the last frame's latency once a drag pauses
   bool syncing_ = false;
 };
 

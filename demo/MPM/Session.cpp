@@ -317,23 +317,35 @@ void Session::frame_shown(double paint_ms)
   if(!frame_awaits_display()) return;
   frame_.shown_ms = milliseconds_since(frame_.posted);
   frame_.paint_ms = paint_ms;
+  display_ms_ = frame_.shown_ms;
   Q_EMIT frame_displayed();
+}
+
+// Sleeps in an event loop (the solver thread has the cores) until `done()`
+// holds, checked whenever `session` emits `signal`, or the time-out.
+template <class Signal, class Done>
+bool wait_for(Session& session, Signal signal, const Done& done, int timeout_ms)
+{
+  if(done()) return true;
+  QEventLoop loop;
+  QTimer::singleShot(timeout_ms, &loop, &QEventLoop::quit);
+  const QMetaObject::Connection c = QObject::connect(&session, signal, &loop, [&done, &loop] {
+    if(done()) loop.quit();
+  });
+  loop.exec();
+  QObject::disconnect(c);
+  return done();
 }
 
 bool Session::wait_until_solved(int timeout_ms)
 {
-  const auto answered = [this] { return frame_.serial >= serial_ && frame_.final; };
-  if(answered()) return true;
-  // Sleeps in an event loop (the solver thread has the cores) until the
-  // frame of the latest request or the time-out arrives.
-  QEventLoop loop;
-  QTimer::singleShot(timeout_ms, &loop, &QEventLoop::quit);
-  const QMetaObject::Connection c = connect(this, &Session::positions_changed, &loop, [&answered, &loop] {
-    if(answered()) loop.quit();
-  });
-  loop.exec();
-  disconnect(c);
-  return answered();
+  return wait_for(*this, &Session::positions_changed,
+                  [this] { return frame_.serial >= serial_ && frame_.final; }, timeout_ms);
+}
+
+bool Session::wait_until_shown(int timeout_ms)
+{
+  return wait_for(*this, &Session::frame_displayed, [this] { return !frame_awaits_display(); }, timeout_ms);
 }
 
 // ---------------------------------------------------------------------------

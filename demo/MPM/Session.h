@@ -103,8 +103,12 @@ public:
   /// Whether the last frame came from a request and no paint has shown it yet.
   bool frame_awaits_display() const
   { return frame_.shown_ms < 0. && frame_.posted != std::chrono::steady_clock::time_point(); }
-  /// Called by the viewer when a paint of `paint_ms` has shown the last
-  /// frame: records the display latency and emits `frame_displayed()`.
+  /// From the request to the screen for the last frame shown (negative
+  /// before the first): the last frame's own until the screen shows it.
+  double display_ms() const { return display_ms_; }
+  /// Called by the viewer when the window has swapped the paint (of
+  /// `paint_ms`) of the last frame to the screen: records the display
+  /// latency and emits `frame_displayed()`.
   void frame_shown(double paint_ms);
   /// @}
 
@@ -172,13 +176,16 @@ public:
   /// Processes events until the solver has answered the latest request or
   /// `timeout_ms` passed. Returns false on timeout.
   bool wait_until_solved(int timeout_ms);
+  /// Processes events until the last frame is on the screen or `timeout_ms`
+  /// passed. Returns false on timeout.
+  bool wait_until_shown(int timeout_ms);
 
 Q_SIGNALS:
   /// The connectivity or the colours changed (new model, new part graph).
   void scene_changed();
   /// A new solver frame arrived.
   void positions_changed();
-  /// The last frame was painted (its `shown_ms` is set).
+  /// The last frame is on the screen (its `shown_ms` is set).
   void frame_displayed();
 
 private:
@@ -224,6 +231,7 @@ private:
   Solve_frame frame_;
   Solver_thread thread_;
   std::unique_ptr<Raw_mesh_cutting> cutting_;
+  double display_ms_ = -1.;
 };
 
 } // namespace mpm_demo

@@ -15,6 +15,7 @@
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,7 @@ protected:
 private:
   void on_scene_changed();
   void on_positions_changed();
+  void on_frame_swapped();
   /// Vertex and face of the MPM mesh under a pixel; {-1, -1} when none.
   std::pair<int, int> pick(const QPoint& pixel);
   /// On a mesh being cut: Shift+click adds the cut at `vertex`, Alt+click removes the nearest.
@@ -93,6 +95,10 @@ private:
   Eigen::Index framed_vertices_ = -1;
   Eigen::RowVector3d framed_lo_ = Eigen::RowVector3d::Zero(), framed_hi_ = Eigen::RowVector3d::Zero();
   bool gl_ready_ = false;
+  /// The frame painted and waiting for the window's swap, and its paint time
+  /// (negative when none waits).
+  std::uint64_t painted_serial_ = 0;
+  double painted_ms_ = -1.;
   std::unique_ptr<Picking_tree> tree_;
   bool tree_dirty_ = true;
   int selected_part_ = -1;

@@ -58,7 +58,7 @@ compare-images $out/symmetrize.png $out/insert.png
 compare-images $out/rest.png $out/insert.png
 SCRIPT
 run "$out/edit.txt" | tee "$out/edit.log"
-if ! grep -q "5 frames of [0-9]* vertices: solver .* ms, shown .* ms after the drag" "$out/edit.log"; then
+if ! grep -q "5 frames of [0-9]* vertices: solver .* ms, on the screen .* ms after the drag" "$out/edit.log"; then
   echo "FAIL: profile-drag did not report its frames" >&2
   exit 1
 fi
