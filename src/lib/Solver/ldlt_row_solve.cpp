@@ -23,13 +23,17 @@ using Sparse = Eigen::SparseMatrix<double>;
 constexpr Eigen::Index max_width = 24;
 
 // The strictly lower `L` (unit diagonal implied) and `D`, read as Eigen's
-// solve reads them: x = P^-1 L^-T D^-1 L^-1 P b.
+// solve reads them: x = P^-1 L^-T D^-1 L^-1 P b. The backward pass reads
+// `L`'s columns from the last to the first: `reversed` holds them in that
+// order (its column r is L's column n - 1 - r, entries below the diagonal
+// only), so that the pass reads memory forwards, as the prefetcher expects.
 struct Factor_view
 {
   const int* outer;
   const int* inner;
   const double* values;
   const double* d;
+  const Ldlt_row_solver::Reversed_columns* reversed;
   // The first entry of column j below the diagonal (entries on or above it
   // are skipped, as Eigen's solve skips them).
   int below(Eigen::Index j) const
@@ -85,14 +89,16 @@ void solve_columns(const Factor_view& l, const Eigen::PermutationMatrix<Eigen::D
       for(Eigen::Index k = 0; k < w; ++k) rows[top[t] * w + k] += buffer[t * std::size_t(w) + std::size_t(k)];
   for(int j : top) forward(j, nullptr);
   // D^-1 is applied to a row as the backward pass reaches it.
+  const Ldlt_row_solver::Reversed_columns& reversed = *l.reversed;
   const auto backward = [&](int j) {
     double yj[Width > 0 ? Width : max_width];
     const double inverse = 1. / l.d[j];
     for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k] * inverse;
-    for(int q = l.below(j); q < l.outer[j + 1]; ++q)
+    const std::size_t r = std::size_t(n - 1 - j);
+    for(int q = reversed.outer[r]; q < reversed.outer[r + 1]; ++q)
     {
-      const double* const yi = rows + Eigen::Index(l.inner[q]) * w;
-      for(Eigen::Index k = 0; k < w; ++k) yj[k] -= l.values[q] * yi[k];
+      const double* const yi = rows + Eigen::Index(reversed.inner[std::size_t(q)]) * w;
+      for(Eigen::Index k = 0; k < w; ++k) yj[k] -= reversed.values[std::size_t(q)] * yi[k];
     }
     for(Eigen::Index k = 0; k < w; ++k) rows[j * w + k] = yj[k];
   };
@@ -191,7 +197,20 @@ Ldlt_row_solver::Ldlt_row_solver(const Vertex_ldlt& ldlt, int parts)
   const Sparse& l = factor.isCompressed() ? factor : compressed_;
   const int n = static_cast<int>(l.rows());
   d_ = ldlt.vectorD();
-  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data()};
+  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data(), &reversed_};
+  reversed_.outer.assign(std::size_t(n) + 1, 0);
+  reversed_.inner.reserve(std::size_t(l.nonZeros()));
+  reversed_.values.reserve(std::size_t(l.nonZeros()));
+  for(int r = 0; r < n; ++r)
+  {
+    const int j = n - 1 - r;
+    for(int q = view.below(j); q < view.outer[j + 1]; ++q)
+    {
+      reversed_.inner.push_back(view.inner[q]);
+      reversed_.values.push_back(view.values[q]);
+    }
+    reversed_.outer[std::size_t(r) + 1] = int(reversed_.inner.size());
+  }
   whole_.parts.assign(1, std::vector<int>(std::size_t(n)));
   for(int j = 0; j < n; ++j) whole_.parts[0][std::size_t(j)] = j;
   split_ = parts > 1 ? split_tree(view, n, parts) : whole_;
@@ -201,7 +220,7 @@ Eigen::MatrixXd Ldlt_row_solver::solve(const Eigen::MatrixXd& b) const
 {
   const Sparse& factor = ldlt_->matrixL().nestedExpression();
   const Sparse& l = factor.isCompressed() ? factor : compressed_;
-  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data()};
+  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data(), &reversed_};
   Eigen::MatrixXd x(b.rows(), b.cols());
   // Groups of at most 24 columns (rows of a group stay in cache lines), at
   // least one per core when each gets 6 columns or more; fewer columns go

@@ -25,6 +25,11 @@ namespace internal {
 // one set per core, then their common ancestors (the top of the tree). Cut
 // by columns, three columns on two cores were a pass of two beside a pass
 // of one.
+//
+// The backward pass reads a copy of `L` with its columns in reverse order
+// (12 bytes per entry: 24 MB on the 64k-vertex spider). Read backwards in
+// Eigen's storage, that pass took 11-13 ms there against 4 ms for the
+// forward pass over as many entries.
 class Ldlt_row_solver
 {
 public:
@@ -46,11 +51,20 @@ public:
     std::vector<int> top;
     std::vector<int> top_slot;
   };
+  // The entries of `L` below the diagonal, column by column from the last
+  // column to the first (compressed columns).
+  struct Reversed_columns
+  {
+    std::vector<int> outer;
+    std::vector<int> inner;
+    std::vector<double> values;
+  };
 
 private:
   const Vertex_ldlt* ldlt_;
   Eigen::SparseMatrix<double> compressed_; // when Eigen's factor is not compressed
   Eigen::VectorXd d_;                      // Eigen hands D out by value
+  Reversed_columns reversed_;              // read by the backward pass
   Partition whole_, split_; // one part without a top; the tree's split
 };
 
