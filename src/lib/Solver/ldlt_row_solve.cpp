@@ -23,17 +23,13 @@ using Sparse = Eigen::SparseMatrix<double>;
 constexpr Eigen::Index max_width = 24;
 
 // The strictly lower `L` (unit diagonal implied) and `D`, read as Eigen's
-// solve reads them: x = P^-1 L^-T D^-1 L^-1 P b. The backward pass reads
-// `L`'s columns from the last to the first: `reversed` holds them in that
-// order (its column r is L's column n - 1 - r, entries below the diagonal
-// only), so that the pass reads memory forwards, as the prefetcher expects.
+// solve reads them: x = P^-1 L^-T D^-1 L^-1 P b.
 struct Factor_view
 {
   const int* outer;
   const int* inner;
   const double* values;
   const double* d;
-  const Ldlt_row_solver::Reversed_columns* reversed;
   // The first entry of column j below the diagonal (entries on or above it
   // are skipped, as Eigen's solve skips them).
   int below(Eigen::Index j) const
@@ -48,11 +44,13 @@ struct Factor_view
 // `x`, the rows of a vertex side by side. `Width` is `count` when it is
 // known at compile time (0 otherwise, at most `max_width`): the few
 // multiply-adds per entry of `L` are then unrolled, which made a 64k-vertex
-// back-substitution of three columns 2.5 times faster. The parts of
-// `partition` run in parallel: each writes its own rows, and its updates of
-// the top's rows go to a buffer of its own, added up before the top.
+// back-substitution of three columns 2.5 times faster. Both passes gather
+// (each row reads the rows it depends on and writes only itself), reading
+// their copy of `L` forwards; the parts of `partition` run in parallel, as a
+// row of a subtree depends only on rows of its subtree (forward) or on
+// rows of its subtree and the top (backward).
 template <int Width>
-void solve_columns(const Factor_view& l, const Eigen::PermutationMatrix<Eigen::Dynamic>& p,
+void solve_columns(const Ldlt_row_solver::Solve_copies& l, const Eigen::PermutationMatrix<Eigen::Dynamic>& p,
                    const Eigen::PermutationMatrix<Eigen::Dynamic>& p_inverse,
                    const Ldlt_row_solver::Partition& partition, const Eigen::MatrixXd& b, Eigen::Index first,
                    Eigen::Index count, Eigen::MatrixXd& x)
@@ -66,39 +64,33 @@ void solve_columns(const Factor_view& l, const Eigen::PermutationMatrix<Eigen::D
     double* const yi = rows + (permuted ? p.indices()[i] : i) * w;
     for(Eigen::Index k = 0; k < w; ++k) yi[k] = b(i, first + k);
   }
-  // Column j's updates of the rows below it; those of the top's rows go to
-  // `top_buffer` when given (a part's own, added up before the top).
-  const std::vector<int>& top = partition.top;
-  const auto forward = [&](int j, double* top_buffer) {
-    double yj[Width > 0 ? Width : max_width];
-    for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k];
-    for(int q = l.below(j); q < l.outer[j + 1]; ++q)
+  // Row i of L y = b, once the rows before it are known.
+  const auto forward = [&](int i) {
+    double yi[Width > 0 ? Width : max_width];
+    for(Eigen::Index k = 0; k < w; ++k) yi[k] = rows[i * w + k];
+    for(int q = l.rows.outer[std::size_t(i)]; q < l.rows.outer[std::size_t(i) + 1]; ++q)
     {
-      const int i = l.inner[q], slot = top_buffer ? partition.top_slot[std::size_t(i)] : -1;
-      double* const yi = slot < 0 ? rows + Eigen::Index(i) * w : top_buffer + Eigen::Index(slot) * w;
-      for(Eigen::Index k = 0; k < w; ++k) yi[k] -= l.values[q] * yj[k];
+      const double* const yj = rows + Eigen::Index(l.rows.inner[std::size_t(q)]) * w;
+      for(Eigen::Index k = 0; k < w; ++k) yi[k] -= l.rows.values[std::size_t(q)] * yj[k];
     }
+    for(Eigen::Index k = 0; k < w; ++k) rows[i * w + k] = yi[k];
   };
-  std::vector<std::vector<double>> top_updates(partition.parts.size());
+  const std::vector<int>& top = partition.top;
   internal::parallel_for_each_index(partition.parts.size(), [&](std::size_t part) {
-    top_updates[part].assign(top.size() * std::size_t(w), 0.);
-    for(int j : partition.parts[part]) forward(j, top.empty() ? nullptr : top_updates[part].data());
+    std::for_each(partition.parts[part].begin(), partition.parts[part].end(), forward);
   });
-  for(const std::vector<double>& buffer : top_updates)
-    for(std::size_t t = 0; t < top.size(); ++t)
-      for(Eigen::Index k = 0; k < w; ++k) rows[top[t] * w + k] += buffer[t * std::size_t(w) + std::size_t(k)];
-  for(int j : top) forward(j, nullptr);
-  // D^-1 is applied to a row as the backward pass reaches it.
-  const Ldlt_row_solver::Reversed_columns& reversed = *l.reversed;
+  std::for_each(top.begin(), top.end(), forward);
+  // Row j of D L^T x = y, once the rows after it are known (D^-1 applied
+  // as the pass reaches the row).
   const auto backward = [&](int j) {
     double yj[Width > 0 ? Width : max_width];
-    const double inverse = 1. / l.d[j];
+    const double inverse = 1. / l.d[std::size_t(j)];
     for(Eigen::Index k = 0; k < w; ++k) yj[k] = rows[j * w + k] * inverse;
     const std::size_t r = std::size_t(n - 1 - j);
-    for(int q = reversed.outer[r]; q < reversed.outer[r + 1]; ++q)
+    for(int q = l.reversed_columns.outer[r]; q < l.reversed_columns.outer[r + 1]; ++q)
     {
-      const double* const yi = rows + Eigen::Index(reversed.inner[std::size_t(q)]) * w;
-      for(Eigen::Index k = 0; k < w; ++k) yj[k] -= reversed.values[std::size_t(q)] * yi[k];
+      const double* const yi = rows + Eigen::Index(l.reversed_columns.inner[std::size_t(q)]) * w;
+      for(Eigen::Index k = 0; k < w; ++k) yj[k] -= l.reversed_columns.values[std::size_t(q)] * yi[k];
     }
     for(Eigen::Index k = 0; k < w; ++k) rows[j * w + k] = yj[k];
   };
@@ -182,8 +174,6 @@ Ldlt_row_solver::Partition split_tree(const Factor_view& l, int n, int count)
                         partition.parts.end());
   for(std::vector<int>& part : partition.parts) std::sort(part.begin(), part.end());
   std::sort(partition.top.begin(), partition.top.end());
-  partition.top_slot.assign(std::size_t(n), -1);
-  for(std::size_t t = 0; t < partition.top.size(); ++t) partition.top_slot[std::size_t(partition.top[t])] = int(t);
   return partition;
 }
 
@@ -193,23 +183,43 @@ Ldlt_row_solver::Ldlt_row_solver(const Vertex_ldlt& ldlt, int parts)
   : ldlt_(&ldlt)
 {
   const Sparse& factor = ldlt.matrixL().nestedExpression();
-  if(!factor.isCompressed()) compressed_ = factor, compressed_.makeCompressed();
-  const Sparse& l = factor.isCompressed() ? factor : compressed_;
+  Sparse compressed;
+  if(!factor.isCompressed()) compressed = factor, compressed.makeCompressed();
+  const Sparse& l = factor.isCompressed() ? factor : compressed;
   const int n = static_cast<int>(l.rows());
-  d_ = ldlt.vectorD();
-  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data(), &reversed_};
-  reversed_.outer.assign(std::size_t(n) + 1, 0);
-  reversed_.inner.reserve(std::size_t(l.nonZeros()));
-  reversed_.values.reserve(std::size_t(l.nonZeros()));
+  const Eigen::VectorXd d = ldlt.vectorD();
+  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d.data()};
+  copies_.d.assign(d.data(), d.data() + d.size());
+  // L's rows (its entries by row, in increasing column) and its columns
+  // from the last to the first.
+  Compressed_lower& by_row = copies_.rows;
+  by_row.outer.assign(std::size_t(n) + 1, 0);
+  for(int j = 0; j < n; ++j)
+    for(int q = view.below(j); q < view.outer[j + 1]; ++q) ++by_row.outer[std::size_t(view.inner[q]) + 1];
+  for(int i = 0; i < n; ++i) by_row.outer[std::size_t(i) + 1] += by_row.outer[std::size_t(i)];
+  by_row.inner.resize(std::size_t(by_row.outer.back()));
+  by_row.values.resize(by_row.inner.size());
+  std::vector<int> next(by_row.outer.begin(), by_row.outer.end() - 1);
+  Compressed_lower& reversed = copies_.reversed_columns;
+  reversed.outer.assign(std::size_t(n) + 1, 0);
+  reversed.inner.reserve(by_row.inner.size());
+  reversed.values.reserve(by_row.inner.size());
+  for(int j = 0; j < n; ++j)
+    for(int q = view.below(j); q < view.outer[j + 1]; ++q)
+    {
+      const std::size_t at = std::size_t(next[std::size_t(view.inner[q])]++);
+      by_row.inner[at] = j;
+      by_row.values[at] = view.values[q];
+    }
   for(int r = 0; r < n; ++r)
   {
     const int j = n - 1 - r;
     for(int q = view.below(j); q < view.outer[j + 1]; ++q)
     {
-      reversed_.inner.push_back(view.inner[q]);
-      reversed_.values.push_back(view.values[q]);
+      reversed.inner.push_back(view.inner[q]);
+      reversed.values.push_back(view.values[q]);
     }
-    reversed_.outer[std::size_t(r) + 1] = int(reversed_.inner.size());
+    reversed.outer[std::size_t(r) + 1] = int(reversed.inner.size());
   }
   whole_.parts.assign(1, std::vector<int>(std::size_t(n)));
   for(int j = 0; j < n; ++j) whole_.parts[0][std::size_t(j)] = j;
@@ -218,9 +228,6 @@ Ldlt_row_solver::Ldlt_row_solver(const Vertex_ldlt& ldlt, int parts)
 
 Eigen::MatrixXd Ldlt_row_solver::solve(const Eigen::MatrixXd& b) const
 {
-  const Sparse& factor = ldlt_->matrixL().nestedExpression();
-  const Sparse& l = factor.isCompressed() ? factor : compressed_;
-  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d_.data(), &reversed_};
   Eigen::MatrixXd x(b.rows(), b.cols());
   // Groups of at most 24 columns (rows of a group stay in cache lines), at
   // least one per core when each gets 6 columns or more; fewer columns go
@@ -240,10 +247,10 @@ Eigen::MatrixXd Ldlt_row_solver::solve(const Eigen::MatrixXd& b) const
     const auto& p_inverse = ldlt_->permutationPinv();
     switch(count)
     {
-    case 1: return solve_columns<1>(view, p, p_inverse, partition, b, first, count, x);
-    case 2: return solve_columns<2>(view, p, p_inverse, partition, b, first, count, x);
-    case 3: return solve_columns<3>(view, p, p_inverse, partition, b, first, count, x);
-    default: return solve_columns<0>(view, p, p_inverse, partition, b, first, count, x);
+    case 1: return solve_columns<1>(copies_, p, p_inverse, partition, b, first, count, x);
+    case 2: return solve_columns<2>(copies_, p, p_inverse, partition, b, first, count, x);
+    case 3: return solve_columns<3>(copies_, p, p_inverse, partition, b, first, count, x);
+    default: return solve_columns<0>(copies_, p, p_inverse, partition, b, first, count, x);
     }
   };
   internal::parallel_for_each_index(std::size_t(groups), solve_group);
