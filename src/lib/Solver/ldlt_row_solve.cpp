@@ -22,14 +22,13 @@ using Sparse = Eigen::SparseMatrix<double>;
 
 constexpr Eigen::Index max_width = 24;
 
-// The strictly lower `L` (unit diagonal implied) and `D`, read as Eigen's
-// solve reads them: x = P^-1 L^-T D^-1 L^-1 P b.
+// Eigen's strictly lower `L` (unit diagonal implied; its solve is
+// x = P^-1 L^-T D^-1 L^-1 P b), read when the solver is made.
 struct Factor_view
 {
   const int* outer;
   const int* inner;
   const double* values;
-  const double* d;
   // The first entry of column j below the diagonal (entries on or above it
   // are skipped, as Eigen's solve skips them).
   int below(Eigen::Index j) const
@@ -188,8 +187,8 @@ Ldlt_row_solver::Ldlt_row_solver(const Vertex_ldlt& ldlt, int parts)
   const Sparse& l = factor.isCompressed() ? factor : compressed;
   const int n = static_cast<int>(l.rows());
   const Eigen::VectorXd d = ldlt.vectorD();
-  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr(), d.data()};
   copies_.d.assign(d.data(), d.data() + d.size());
+  const Factor_view view{l.outerIndexPtr(), l.innerIndexPtr(), l.valuePtr()};
   // L's rows (its entries by row, in increasing column) and its columns
   // from the last to the first.
   Compressed_lower& by_row = copies_.rows;
