@@ -8,6 +8,7 @@
 #include <CGAL/MPM/IO/Mesh_io.h>
 
 #include "Tube_mesh.h"
+#include "Psb_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -100,11 +101,7 @@ TEST(Dense_correspondence_orientation, mirror_image_is_not_turned_inside_out)
   }
 }
 
-std::string psb_directory()
-{
-  const char* dir = std::getenv("MPM_PSB_DIR");
-  return dir && *dir ? dir : MPM_PSB_DIR;
-}
+using mpm_test::psb_directory;
 
 // The segments of a labelled mesh grouped by their depth in the segment
 // graph from the largest segment (on a hand: palm, proximal, middle,

@@ -12,6 +12,7 @@
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include "Io_test_support.h"
+#include "Psb_meshes.h"
 #include "Learned_models.h"
 #include "Tool_test_support.h"
 #include "Tube_mesh.h"
@@ -204,11 +205,7 @@ TEST(Joint_cutting, CommandWritesLabelsAndNamesBadClicks)
   EXPECT_EQ(mpm_test::run_tool(dir.path(), "cut " + dir.file("hand.off") + at + " --cuts c.json -o " + dir.file("x")).status, 2);
 }
 
-std::string psb_directory()
-{
-  const char* dir = std::getenv("MPM_PSB_DIR");
-  return dir && *dir ? dir : MPM_PSB_DIR;
-}
+using mpm_test::psb_directory;
 
 // The human cuts of a PSB mesh a user would click (`joint_cuts()`, as
 // bench/quality_segmentation clicks them) and one click on each (the vertex

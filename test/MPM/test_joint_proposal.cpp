@@ -13,6 +13,7 @@
 #include <CGAL/MPM/internal/Bounding_box.h>
 
 #include "Io_test_support.h"
+#include "Psb_meshes.h"
 #include "Learned_models.h"
 #include "Tool_test_support.h"
 
@@ -112,11 +113,7 @@ TEST(Joint_proposal, BadInputIsAnInputError)
   }
 }
 
-std::string psb_directory()
-{
-  const char* dir = std::getenv("MPM_PSB_DIR");
-  return dir && *dir ? dir : MPM_PSB_DIR;
-}
+using mpm_test::psb_directory;
 
 // Where the limbs leave the body on a real scan: the human cuts around the
 // largest segment (the palm, the octopus's body) each have a proposed cut

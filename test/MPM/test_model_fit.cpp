@@ -18,6 +18,7 @@
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
 #include "Tool_test_support.h"
+#include "Psb_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -306,17 +307,13 @@ TEST(Model_fit, command_line_fit_and_bad_file)
   EXPECT_NE(unknown.err.find("segment 42: no face has this label"), std::string::npos) << unknown.err;
 }
 
-std::string psb_dir()
-{
-  const char* dir = std::getenv("MPM_PSB_DIR");
-  return dir && *dir ? dir : MPM_PSB_DIR;
-}
+using mpm_test::psb_directory;
 
 // The first of `names` whose mesh is not in the PSB directory, or empty.
 std::string missing_psb_mesh(const std::vector<std::string>& names)
 {
   for(const std::string& name : names)
-    if(!std::filesystem::is_regular_file(psb_dir() + "/" + name + ".off")) return psb_dir() + "/" + name + ".off";
+    if(!std::filesystem::is_regular_file(psb_directory() + "/" + name + ".off")) return psb_directory() + "/" + name + ".off";
   return {};
 }
 
@@ -326,7 +323,7 @@ std::vector<Training_input> psb_inputs_with_proposed_types(const std::vector<std
 {
   std::vector<Labeled_mesh> meshes;
   for(const std::string& name : names)
-    meshes.push_back(read_labeled_mesh(psb_dir() + "/" + name + ".off", psb_dir() + "/" + name + ".seg"));
+    meshes.push_back(read_labeled_mesh(psb_directory() + "/" + name + ".off", psb_directory() + "/" + name + ".seg"));
   const std::vector<Part_type_proposal> proposals = propose_part_types(meshes);
   std::vector<Training_input> inputs(names.size());
   for(std::size_t i = 0; i < names.size(); ++i) inputs[i] = {meshes[i], proposals[i].annotation};

@@ -12,6 +12,7 @@
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include "Tool_test_support.h"
+#include "Psb_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -29,20 +30,11 @@ namespace {
 using namespace CGAL::MPM;
 namespace fs = std::filesystem;
 
-std::string psb_dir()
-{
-  const char* dir = std::getenv("MPM_PSB_DIR");
-  return dir && *dir ? dir : MPM_PSB_DIR;
-}
-
-#define MPM_REQUIRE_PSB(name)                                                                               \
-  if(!fs::is_regular_file(psb_dir() + "/" + std::string(name) + ".off"))                                    \
-  GTEST_SKIP() << psb_dir() << "/" << name << ".off not found: the segmented PSB meshes are not there (set " \
-               << "MPM_PSB_DIR to their directory)"
+using mpm_test::psb_directory;
 
 Labeled_mesh read_psb(const std::string& name)
 {
-  return read_labeled_mesh(psb_dir() + "/" + name + ".off", psb_dir() + "/" + name + ".seg");
+  return read_labeled_mesh(psb_directory() + "/" + name + ".off", psb_directory() + "/" + name + ".seg");
 }
 
 // Groups of labels as a set of sets: two annotations agree when they put
@@ -364,7 +356,7 @@ TEST(Proposal, CliLearnProposesPrintsAndWritesTheAnnotation)
   const fs::path dir = fs::temp_directory_path() / ("mpm_proposal_cli_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string mesh = psb_dir() + "/hand_181.off", seg = psb_dir() + "/hand_181.seg";
+  const std::string mesh = psb_directory() + "/hand_181.off", seg = psb_directory() + "/hand_181.seg";
   const std::string annotation = (dir / "hand_181.json").string(), model = (dir / "hand_181.mpm").string();
   const mpm_test::Run_result r =
     mpm_test::run_tool(dir, "learn " + mpm_test::quote(mesh) + " --labels " + mpm_test::quote(seg) +

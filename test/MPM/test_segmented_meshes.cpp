@@ -20,6 +20,8 @@
 #include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
+#include "Psb_meshes.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,16 +36,7 @@ namespace {
 
 using namespace CGAL::MPM;
 
-std::string psb_file(const std::string& name)
-{
-  const char* dir = std::getenv("MPM_PSB_DIR");
-  return std::string(dir && *dir ? dir : MPM_PSB_DIR) + "/" + name;
-}
-
-#define MPM_REQUIRE_PSB(name)                                                                                     \
-  if(!std::ifstream(psb_file(name + ".off")).good())                                                              \
-  GTEST_SKIP() << psb_file(name + ".off") << " not found: the segmented meshes of ../shared/data/psb are not "  \
-                  "beside this checkout (set MPM_PSB_DIR)"
+using mpm_test::psb_file;
 
 struct Learned
 {
