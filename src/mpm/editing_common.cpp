@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "editing_common.h"
 
-#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/internal/Edit_solving.h>
 #include <CGAL/MPM/Solver/Embedding_solver.h>
 #include <CGAL/MPM/Solver/Handle_set.h>
 #include <CGAL/MPM/Input_error.h>
@@ -134,8 +134,10 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
 
   context.progress.update("setting up", 0.1);
   Json settings = Json::object();
-  const Edit_result r = solve_edit(model, editing.make_problem(args, model, example, settings), handles, edit);
-  const Indexed_mesh& edited = r.mesh;
+  const internal::Solved_edit solved =
+    internal::solve_edit(model, editing.make_problem(args, model, example, settings), handles, edit);
+  const Indexed_mesh& edited = solved.mesh;
+  const Edit_result& r = solved.result;
   const Solve_report& report = r.report;
 
   context.progress.update("writing " + output, 0.9);

@@ -55,7 +55,7 @@ struct Reference
 {
   Cutting_result cut;
   Morphable_part_model model;
-  Edit_result deformed;
+  internal::Solved_edit deformed;
   Assembly assembly;
 };
 
@@ -65,7 +65,7 @@ const Reference& reference()
     Reference ref;
     ref.cut = cut_mesh(hand().mesh.mesh, mpm_test::hand_cuts(hand()), Cutting_options(), "hand");
     ref.model = learn_morphable_part_model(ref.cut.mesh, hand().annotation);
-    ref.deformed = solve_edit(ref.model, make_deformation_problem(ref.model), tip_handles(ref.model.examples[0].mesh));
+    ref.deformed = internal::solve_edit(ref.model, make_deformation_problem(ref.model), tip_handles(ref.model.examples[0].mesh));
     ref.assembly = assemble(ref.model, part_graph_of_example(ref.model));
     return ref;
   }();
@@ -131,7 +131,7 @@ void run_pipeline(double tolerance)
     handles.emplace_back(vertex[std::size_t(h.vertices[std::size_t(k)])],
                          Point(h.targets(k, 0), h.targets(k, 1), h.targets(k, 2)));
   const Edit_result deformed = deform(model, edited, handles);
-  EXPECT_EQ(deformed.report.iterations, ref.deformed.report.iterations);
+  EXPECT_EQ(deformed.report.iterations, ref.deformed.result.report.iterations);
   EXPECT_LT(largest_difference(to_indexed_mesh(edited).points, ref.deformed.mesh.points), tolerance * diagonal);
   // The edit moved the mesh: the comparison is not of two rest states.
   EXPECT_GT(largest_difference(to_indexed_mesh(edited).points, ref.model.examples[0].mesh.points), 0.01 * diagonal);
@@ -140,7 +140,7 @@ void run_pipeline(double tolerance)
   Mesh symmetric;
   copy_training_example(model, 0, symmetric, get(CGAL::dynamic_face_property_t<int>(), symmetric));
   symmetrize(model, symmetric);
-  const Edit_result ref_symmetric = solve_edit(ref.model, make_symmetrization_problem(ref.model));
+  const internal::Solved_edit ref_symmetric = internal::solve_edit(ref.model, make_symmetrization_problem(ref.model));
   EXPECT_LT(largest_difference(to_indexed_mesh(symmetric).points, ref_symmetric.mesh.points), tolerance * diagonal);
 
   // Assemble into a new mesh with the node of each face.

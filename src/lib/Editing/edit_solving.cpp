@@ -1,6 +1,6 @@
 // Copyright (c) 2026 CGAL-MPM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/internal/Edit_solving.h>
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Editing/Surface_soundness.h>
 #include <CGAL/MPM/internal/Bounding_box.h>
@@ -60,7 +60,9 @@ Indexed_mesh at_positions(const Indexed_mesh& mesh, const Point_matrix& position
 
 } // namespace
 
-Edit_result solve_edit(const Morphable_part_model& model, const Embedding_problem& problem,
+namespace internal {
+
+Solved_edit solve_edit(const Morphable_part_model& model, const Embedding_problem& problem,
                        const Handle_set& handles, const Edit_options& options)
 {
   const int example = options.example;
@@ -71,7 +73,8 @@ Edit_result solve_edit(const Morphable_part_model& model, const Embedding_proble
   const std::string name = "example " + std::to_string(example) + " (" + input.name + ")";
   check_handles(handles, input.mesh, name, options.handles_source);
 
-  Edit_result r;
+  Solved_edit edit;
+  Edit_result& r = edit.result;
   const Clock::time_point setup_start = Clock::now();
   Embedding_solver solver(problem, options.solver);
   if(handles.size() > 0) solver.set_handles(handles.vertices, handles.targets);
@@ -89,18 +92,20 @@ Edit_result solve_edit(const Morphable_part_model& model, const Embedding_proble
     static_cast<int>(inverted_faces(at_positions(input.mesh, solved), input.mesh, &input.face_labels).size());
 
   const Clock::time_point unfold_start = Clock::now();
-  r.mesh = at_positions(input.mesh, options.unfold ? unfold_faces(input.mesh, solved, handles.vertices) : solved);
+  edit.mesh = at_positions(input.mesh, options.unfold ? unfold_faces(input.mesh, solved, handles.vertices) : solved);
   r.unfold_ms = milliseconds_since(unfold_start);
-  r.inverted_faces_written = static_cast<int>(inverted_faces(r.mesh, input.mesh, &input.face_labels).size());
+  r.inverted_faces_written = static_cast<int>(inverted_faces(edit.mesh, input.mesh, &input.face_labels).size());
 
-  const double diagonal = internal::bounding_box_diagonal(input.mesh.points);
-  const double moved = (r.mesh.points - input.mesh.points).rowwise().norm().maxCoeff() / diagonal;
+  const double diagonal = bounding_box_diagonal(input.mesh.points);
+  const double moved = (edit.mesh.points - input.mesh.points).rowwise().norm().maxCoeff() / diagonal;
   if(diagonal > 0. && moved > farthest_sensible_move)
     throw Computation_error("the edit of " + name + " moves vertices by up to " + number_text(moved) +
                             " bounding-box diagonals (more than " + number_text(farthest_sensible_move) +
                             "); nothing written");
-  return r;
+  return edit;
 }
+
+} // namespace internal
 
 } // namespace MPM
 } // namespace CGAL

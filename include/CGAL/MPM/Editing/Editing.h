@@ -80,7 +80,7 @@ Embedding_problem make_caricature_problem(const Morphable_part_model& model, dou
 Point_matrix unfold_faces(const Indexed_mesh& rest, const Point_matrix& positions, const std::vector<int>& held = {});
 
 /// \ingroup PkgMPMRef
-/// Options of `solve_edit()`.
+/// Options of an edit: `deform()`, `symmetrize()` and `caricature()`.
 struct Edit_options
 {
   int example = 0;          ///< training example to edit
@@ -93,10 +93,11 @@ struct Edit_options
 };
 
 /// \ingroup PkgMPMRef
-/// An edit solved to its result.
+/// What an edit did. The edited shape itself is written into the user's
+/// mesh, through its vertex point map, by `deform()`, `symmetrize()` and
+/// `caricature()`.
 struct Edit_result
 {
-  Indexed_mesh mesh;   ///< the edited mesh: the example's triangles at their new positions
   Solve_report report; ///< what the solver did
   /// Faces the solver turned inside out within their part, and as many
   /// after the folds were taken out (`inverted_faces()`).
@@ -106,18 +107,6 @@ struct Edit_result
   double solve_ms = 0.;  ///< solver iterations
   double unfold_ms = 0.; ///< `unfold_faces()`
 };
-
-/// \ingroup PkgMPMRef
-/// Solves `problem` (one of the editing problems of example
-/// `options.example`) with `handles` (vertices of the example's mesh and
-/// their targets) to
-/// convergence and takes out the folds, as the editing commands of `mpm`
-/// do. Throws `Input_error` for an example out of range, a handle vertex
-/// out of range or a handle target more than 100 bounding-box diagonals
-/// away (naming the handle), and `Computation_error` when the solver gives
-/// non-finite positions or moves a vertex that far.
-Edit_result solve_edit(const Morphable_part_model& model, const Embedding_problem& problem,
-                       const Handle_set& handles = Handle_set(), const Edit_options& options = Edit_options());
 
 } // namespace MPM
 } // namespace CGAL

@@ -5,6 +5,7 @@
 
 #include <CGAL/MPM/Assembly/Assembly.h>
 #include <CGAL/MPM/Editing/Editing.h>
+#include <CGAL/MPM/internal/Edit_solving.h>
 #include <CGAL/MPM/IO/Face_graph_conversion.h>
 #include <CGAL/MPM/Named_parameters.h>
 
@@ -148,9 +149,9 @@ template <class FaceGraph, class NamedParameters>
 Edit_result edit_face_graph(const Morphable_part_model& model, const Embedding_problem& problem, FaceGraph& g,
                             const Handle_set& h, const Edit_options& options, const NamedParameters& np)
 {
-  Edit_result r = solve_edit(model, problem, h, options);
-  write_positions(r.mesh.points, g, np);
-  return r;
+  const Solved_edit edit = solve_edit(model, problem, h, options);
+  write_positions(edit.mesh.points, g, np);
+  return edit.result;
 }
 
 // The same with handles given as (vertex descriptor, target point) pairs,
