@@ -23,12 +23,17 @@ inline std::string psb_directory()
 // The file `name` (with its extension) of the PSB directory.
 inline std::string psb_file(const std::string& name) { return psb_directory() + "/" + name; }
 
+// Why a test on the PSB meshes skips: `path` (a mesh or their directory) is absent.
+inline std::string psb_not_found(const std::string& path)
+{
+  return path + " not found: the segmented PSB meshes are not there (set MPM_PSB_DIR to their directory)";
+}
+
 } // namespace mpm_test
 
 // Skips the test with a message when the PSB mesh `name` (no extension) is absent.
-#define MPM_REQUIRE_PSB(name)                                                                        \
-  if(!std::filesystem::is_regular_file(mpm_test::psb_file(std::string(name) + ".off")))             \
-  GTEST_SKIP() << mpm_test::psb_file(std::string(name) + ".off")                                     \
-               << " not found: the segmented PSB meshes are not there (set MPM_PSB_DIR to their directory)"
+#define MPM_REQUIRE_PSB(name)                                                            \
+  if(!std::filesystem::is_regular_file(mpm_test::psb_file(std::string(name) + ".off"))) \
+  GTEST_SKIP() << mpm_test::psb_not_found(mpm_test::psb_file(std::string(name) + ".off"))
 
 #endif

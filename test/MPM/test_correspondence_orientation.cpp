@@ -101,8 +101,6 @@ TEST(Dense_correspondence_orientation, mirror_image_is_not_turned_inside_out)
   }
 }
 
-using mpm_test::psb_directory;
-
 // The segments of a labelled mesh grouped by their depth in the segment
 // graph from the largest segment (on a hand: palm, proximal, middle,
 // distal), seam vertices tagged with the depth across the seam.
@@ -159,11 +157,8 @@ TEST(Dense_correspondence_orientation, real_hand_phalanges_keep_their_orientatio
   // hand_190: its thumb's base, typed like the other proximal phalanges,
   // was matched to the template as a mirror image (95% of its triangles
   // inside out).
-  const std::string path = psb_directory() + "/hand_190.off";
-  if(!std::filesystem::exists(path))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory()
-                 << " (set MPM_PSB_DIR to their directory)";
-  const Labeled_mesh lm = read_labeled_mesh(path, psb_directory() + "/hand_190.seg");
+  MPM_REQUIRE_PSB("hand_190");
+  const Labeled_mesh lm = read_labeled_mesh(mpm_test::psb_file("hand_190.off"), mpm_test::psb_file("hand_190.seg"));
   for(const auto& [depth, segments] : segments_by_depth(lm))
   {
     ASSERT_EQ(segments.size(), 5u) << "depth " << depth;

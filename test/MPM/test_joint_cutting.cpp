@@ -231,7 +231,7 @@ struct Human_cuts
 
 bool read_human_cuts(const std::string& name, Human_cuts& h)
 {
-  const std::string base = psb_directory() + "/" + name;
+  const std::string base = mpm_test::psb_file(name);
   if(!std::filesystem::exists(base + ".off")) return false;
   h.human = read_labeled_mesh(base + ".off", base + ".seg");
   for(const Segmentation_cut& c : joint_cuts(segmentation_cuts(h.human.mesh, h.human.face_labels))) {
@@ -252,7 +252,7 @@ TEST(Joint_cutting, OneClickPerHumanCutOfAnAnt)
 {
   Human_cuts h;
   if(!read_human_cuts("ant_81", h))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(psb_directory());
   ASSERT_GE(h.cuts.size(), 20u);
   const Joint_cutting_result result = cut_at_vertices(h.human.mesh, h.clicks, Joint_cutting_options(), "ant_81.off");
   ASSERT_EQ(result.cuts.size(), h.cuts.size());
@@ -273,7 +273,7 @@ TEST(Joint_cutting, CutsFollowTheCreasePeopleCutAlong)
 {
   Human_cuts h;
   if(!read_human_cuts("octopus_137", h))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(psb_directory());
   Joint_cutting_options options;
   options.skip_unfound = true;
   const std::vector<double> snapped = h.distances(cut_at_vertices(h.human.mesh, h.clicks, options, "octopus_137.off"));
@@ -311,7 +311,7 @@ TEST(Joint_cutting, AClickAtALegsBaseCutsTheLegNotTheBody)
 {
   const double d = one_click_distance("ant_97", 8, 20);
   if(std::isnan(d))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(psb_directory());
   EXPECT_LT(d, 0.01);
 }
 
@@ -324,7 +324,7 @@ TEST(Joint_cutting, AClickWhereALimbFlaresIntoTheBodyCutsTheLimb)
 {
   const double leg = one_click_distance("ant_97", 8, 24);
   if(std::isnan(leg))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(psb_directory());
   EXPECT_LT(leg, 0.01);
   EXPECT_LT(one_click_distance("hand_190", 0, 7), 0.01);
 }
@@ -359,7 +359,7 @@ TEST(Joint_cutting, CutsThatShareAFewEdgesAreTwoJoints)
 {
   Human_cuts h;
   if(!read_human_cuts("octopus_124", h))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(psb_directory());
   std::vector<int> clicks;
   std::vector<std::vector<int>> cuts;
   click_human_cuts(h, {{0, 11}, {8, 11}}, clicks, cuts);
@@ -384,7 +384,7 @@ TEST(Joint_cutting, AThinRingBetweenTwoCreasesIsTwoJointsInEitherOrder)
 {
   Human_cuts h;
   if(!read_human_cuts("octopus_124", h))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(psb_directory());
   std::vector<int> clicks;
   std::vector<std::vector<int>> cuts;
   click_human_cuts(h, {{0, 9}, {2, 9}}, clicks, cuts);

@@ -113,14 +113,12 @@ TEST(Joint_proposal, BadInputIsAnInputError)
   }
 }
 
-using mpm_test::psb_directory;
-
 // Where the limbs leave the body on a real scan: the human cuts around the
 // largest segment (the palm, the octopus's body) each have a proposed cut
 // within 1.5% of the diagonal, all but two of them.
 void check_limbs_of_real_mesh(const std::string& name, int limbs, double rand_index_bound)
 {
-  const std::string base = psb_directory() + "/" + name;
+  const std::string base = mpm_test::psb_file(name);
   const Labeled_mesh human = read_labeled_mesh(base + ".off", base + ".seg");
   const Indexed_mesh& m = human.mesh;
   const Joint_proposal p = cut_at_proposed_joints(m, Joint_proposal_options(), base + ".off");
@@ -143,8 +141,7 @@ void check_limbs_of_real_mesh(const std::string& name, int limbs, double rand_in
 
 TEST(Joint_proposal, RealHandAndOctopusLimbs)
 {
-  if(!std::filesystem::exists(psb_directory() + "/hand_190.off"))
-    GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+  MPM_REQUIRE_PSB("hand_190");
   check_limbs_of_real_mesh("hand_190", 5, 0.1);
   check_limbs_of_real_mesh("octopus_126", 8, 0.1);
 }
@@ -154,9 +151,8 @@ TEST(Joint_proposal, LearnWithAutoCutFromRawMeshes)
 {
   const mpm_test::Scratch_directory dir;
   for(const std::string name : {"hand_190", "octopus_126"}) {
-    const std::string mesh = psb_directory() + "/" + name + ".off";
-    if(!std::filesystem::exists(mesh))
-      GTEST_SKIP() << "segmented PSB meshes not found at " << psb_directory() << " (set MPM_PSB_DIR to their directory)";
+    MPM_REQUIRE_PSB(name);
+    const std::string mesh = mpm_test::psb_file(name + ".off");
     // A copy without its .seg beside it: nothing but the mesh.
     std::filesystem::copy_file(mesh, dir.file(name + ".off"));
     const mpm_test::Run_result learn = mpm_test::run_tool(

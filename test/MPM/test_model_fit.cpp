@@ -307,13 +307,11 @@ TEST(Model_fit, command_line_fit_and_bad_file)
   EXPECT_NE(unknown.err.find("segment 42: no face has this label"), std::string::npos) << unknown.err;
 }
 
-using mpm_test::psb_directory;
-
 // The first of `names` whose mesh is not in the PSB directory, or empty.
 std::string missing_psb_mesh(const std::vector<std::string>& names)
 {
   for(const std::string& name : names)
-    if(!std::filesystem::is_regular_file(psb_directory() + "/" + name + ".off")) return psb_directory() + "/" + name + ".off";
+    if(!std::filesystem::is_regular_file(mpm_test::psb_file(name + ".off"))) return mpm_test::psb_file(name + ".off");
   return {};
 }
 
@@ -323,7 +321,7 @@ std::vector<Training_input> psb_inputs_with_proposed_types(const std::vector<std
 {
   std::vector<Labeled_mesh> meshes;
   for(const std::string& name : names)
-    meshes.push_back(read_labeled_mesh(psb_directory() + "/" + name + ".off", psb_directory() + "/" + name + ".seg"));
+    meshes.push_back(read_labeled_mesh(mpm_test::psb_file(name + ".off"), mpm_test::psb_file(name + ".seg")));
   const std::vector<Part_type_proposal> proposals = propose_part_types(meshes);
   std::vector<Training_input> inputs(names.size());
   for(std::size_t i = 0; i < names.size(); ++i) inputs[i] = {meshes[i], proposals[i].annotation};
@@ -343,7 +341,7 @@ TEST(Model_fit, psb_hand_leave_one_out)
   const std::vector<std::string> names = {"hand_181", "hand_190", "hand_194", "hand_196", "hand_197"};
   const std::string missing = missing_psb_mesh(names);
   if(!missing.empty())
-    GTEST_SKIP() << missing << " not found: the segmented PSB meshes are not there (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(missing);
   const std::vector<Training_input> inputs = psb_inputs_with_proposed_types(names);
   Model_fit_options options;
   options.skip_unfittable = true; // a palm of a seam count no other hand has
@@ -379,7 +377,7 @@ TEST(Model_fit, psb_ant_leave_one_out_fits_the_surface)
   const std::vector<std::string> names = {"ant_81", "ant_83", "ant_90", "ant_97"};
   const std::string missing = missing_psb_mesh(names);
   if(!missing.empty())
-    GTEST_SKIP() << missing << " not found: the segmented PSB meshes are not there (set MPM_PSB_DIR to their directory)";
+    GTEST_SKIP() << mpm_test::psb_not_found(missing);
   const std::vector<Training_input> inputs = psb_inputs_with_proposed_types(names);
   Model_fit_options options;
   options.skip_unfittable = true;

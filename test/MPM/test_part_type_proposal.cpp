@@ -30,11 +30,9 @@ namespace {
 using namespace CGAL::MPM;
 namespace fs = std::filesystem;
 
-using mpm_test::psb_directory;
-
 Labeled_mesh read_psb(const std::string& name)
 {
-  return read_labeled_mesh(psb_directory() + "/" + name + ".off", psb_directory() + "/" + name + ".seg");
+  return read_labeled_mesh(mpm_test::psb_file(name + ".off"), mpm_test::psb_file(name + ".seg"));
 }
 
 // Groups of labels as a set of sets: two annotations agree when they put
@@ -356,7 +354,7 @@ TEST(Proposal, CliLearnProposesPrintsAndWritesTheAnnotation)
   const fs::path dir = fs::temp_directory_path() / ("mpm_proposal_cli_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string mesh = psb_directory() + "/hand_181.off", seg = psb_directory() + "/hand_181.seg";
+  const std::string mesh = mpm_test::psb_file("hand_181.off"), seg = mpm_test::psb_file("hand_181.seg");
   const std::string annotation = (dir / "hand_181.json").string(), model = (dir / "hand_181.mpm").string();
   const mpm_test::Run_result r =
     mpm_test::run_tool(dir, "learn " + mpm_test::quote(mesh) + " --labels " + mpm_test::quote(seg) +
