@@ -23,7 +23,7 @@ namespace {
 using CGAL::MPM::Arap_deformation;
 using mpm_bench::Bench_model;
 
-void set_counters(benchmark::State& state, Bench_model model, const mpm_bench::Memory_probe& memory)
+void set_mesh_counters(benchmark::State& state, Bench_model model, const mpm_bench::Memory_probe& memory)
 {
   state.counters["vertices"] = mpm_bench::bench_mesh(model).mesh.number_of_vertices();
   if(memory.extra_peak_mb() >= 0.) state.counters["peak_MB"] = memory.extra_peak_mb();
@@ -52,7 +52,7 @@ void BM_arap_iteration(benchmark::State& state, Bench_model model)
     state.SkipWithError(e.what());
     return;
   }
-  set_counters(state, model, memory);
+  set_mesh_counters(state, model, memory);
 }
 
 void BM_arap_preprocess(benchmark::State& state, Bench_model model)
@@ -73,7 +73,7 @@ void BM_arap_preprocess(benchmark::State& state, Bench_model model)
     state.SkipWithError(e.what());
     return;
   }
-  set_counters(state, model, memory);
+  set_mesh_counters(state, model, memory);
 }
 
 // ARAP run as the demo runs it: until an iteration moves no vertex by more
@@ -109,7 +109,7 @@ void BM_arap_first_frame(benchmark::State& state, Bench_model model)
     return;
   }
   state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
-  set_counters(state, model, memory);
+  set_mesh_counters(state, model, memory);
 }
 
 // A drag frame as bench_mpm.cpp's BM_frame has it: from a converged state
@@ -138,10 +138,10 @@ void BM_arap_frame(benchmark::State& state, Bench_model model)
     return;
   }
   state.counters["iterations_per_frame"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
-  set_counters(state, model, memory);
+  set_mesh_counters(state, model, memory);
 }
 
-const bool registered = [] {
+const bool arap_benchmarks_registered = [] {
   for(Bench_model model : mpm_bench::all_models()) {
     const std::string name = mpm_bench::model_name(model);
     auto* iteration = benchmark::RegisterBenchmark(("BM_iteration/" + name + "/arap").c_str(), BM_arap_iteration, model)

@@ -67,6 +67,9 @@ inline std::string read_bytes(const std::string& path)
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+// Three vertex lines of a mesh file, for the files that vary the rest.
+inline const std::string triangle_vertices = "0 0 0\n1 0 0\n0 1 0\n";
+
 // The message of the Input_error that `f` throws, or a marker when it throws none.
 template <class F>
 std::string input_error_message(F&& f)

@@ -9,6 +9,8 @@
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
+#include "Point_distances.h"
+
 #include <map>
 #include <utility>
 #include <vector>
@@ -39,9 +41,22 @@ inline const Learned& learned(CGAL::MPM::Synthetic_family family, int vertices)
   return it->second;
 }
 
-inline double diagonal(const CGAL::MPM::Point_matrix& p)
+// The synthetic hand at 3,000 vertices, the size most tests use, made once;
+// without a model, for the tests that need only its shape and parts.
+inline const CGAL::MPM::Synthetic_model& small_hand()
 {
-  return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+  static const CGAL::MPM::Synthetic_model hand = [] {
+    CGAL::MPM::Synthetic_options o;
+    o.vertices = 3000;
+    return CGAL::MPM::make_synthetic_model(CGAL::MPM::Synthetic_family::hand, o);
+  }();
+  return hand;
+}
+
+// The model learned from that hand.
+inline const CGAL::MPM::Morphable_part_model& small_hand_model()
+{
+  return learned(CGAL::MPM::Synthetic_family::hand, 3000).model;
 }
 
 inline CGAL::MPM::Point_matrix rows(const CGAL::MPM::Point_matrix& p, const std::vector<int>& vertices)

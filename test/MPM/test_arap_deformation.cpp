@@ -13,6 +13,10 @@
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 
 #include <Eigen/Geometry>
+#include "Point_distances.h"
+
+#include "Learned_models.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,24 +25,10 @@ using namespace CGAL::MPM;
 
 namespace {
 
-const Synthetic_model& hand()
-{
-  static const Synthetic_model model = [] {
-    Synthetic_options o;
-    o.vertices = 3000;
-    return make_synthetic_model(Synthetic_family::hand, o);
-  }();
-  return model;
-}
-
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
-
-double max_distance(const Point_matrix& a, const Point_matrix& b) { return (a - b).rowwise().norm().maxCoeff(); }
-
-double rms_distance(const Point_matrix& a, const Point_matrix& b)
-{
-  return std::sqrt((a - b).rowwise().squaredNorm().mean());
-}
+using mpm_test::small_hand;
+using mpm_test::diagonal;
+using mpm_test::max_distance;
+using mpm_test::rms_distance;
 
 // Two triangles sharing the edge 1-2, and a third on the same edge: a
 // non-manifold edge when `fin` is set.
@@ -56,7 +46,7 @@ Indexed_mesh small_mesh(bool fin)
 
 TEST(Arap_deformation, rest_targets_return_the_input)
 {
-  const Indexed_mesh& mesh = hand().mesh.mesh;
+  const Indexed_mesh& mesh = small_hand().mesh.mesh;
   Arap_deformation arap(mesh);
   arap.set_handles(farthest_point_handles(mesh, 8, mesh.points));
   // Converged at once: the first iteration already moves nothing.
@@ -66,7 +56,7 @@ TEST(Arap_deformation, rest_targets_return_the_input)
 
 TEST(Arap_deformation, rigid_handle_motion_gives_the_rigid_motion)
 {
-  const Indexed_mesh& mesh = hand().mesh.mesh;
+  const Indexed_mesh& mesh = small_hand().mesh.mesh;
   const Eigen::Matrix3d rotation = Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d(1, 2, 2).normalized()).matrix();
   const Eigen::RowVector3d translation(0.3, -1.2, 0.7);
   const Point_matrix moved = (mesh.points * rotation.transpose()).rowwise() + translation;
@@ -81,13 +71,13 @@ TEST(Arap_deformation, rigid_handle_motion_gives_the_rigid_motion)
 
 TEST(Arap_deformation, handles_of_a_held_out_pose_reduce_the_error)
 {
-  const Indexed_mesh& mesh = hand().mesh.mesh;
-  const Point_matrix pose = hand().draw_pose(11);
+  const Indexed_mesh& mesh = small_hand().mesh.mesh;
+  const Point_matrix pose = small_hand().draw_pose(11);
   const double before = rms_distance(mesh.points, pose);
   // Measured: 0.376 before; 0.258 after with 16 farthest points, 0.160 with
   // two handles per part.
   for(const auto& handles_and_bound : {std::make_pair(farthest_point_handles(mesh, 16, pose), 0.75),
-                                       std::make_pair(handles_per_part(hand().mesh, 2, pose), 0.5)}) {
+                                       std::make_pair(handles_per_part(small_hand().mesh, 2, pose), 0.5)}) {
     const Handle_set& handles = handles_and_bound.first;
     Arap_deformation arap(mesh);
     arap.set_handles(handles);
@@ -103,8 +93,8 @@ TEST(Arap_deformation, handles_of_a_held_out_pose_reduce_the_error)
 
 TEST(Arap_deformation, variants_run_and_stay_finite)
 {
-  const Indexed_mesh& mesh = hand().mesh.mesh;
-  const Point_matrix pose = hand().draw_pose(11);
+  const Indexed_mesh& mesh = small_hand().mesh.mesh;
+  const Point_matrix pose = small_hand().draw_pose(11);
   const double before = rms_distance(mesh.points, pose);
   for(Arap_variant variant : {Arap_variant::spokes_and_rims, Arap_variant::smooth_rotation_enhanced}) {
     Arap_deformation arap(mesh, variant);
@@ -117,7 +107,7 @@ TEST(Arap_deformation, variants_run_and_stay_finite)
 
 TEST(Arap_deformation, new_targets_on_the_same_handles_and_reset)
 {
-  const Indexed_mesh& mesh = hand().mesh.mesh;
+  const Indexed_mesh& mesh = small_hand().mesh.mesh;
   const Handle_set at_rest = farthest_point_handles(mesh, 8, mesh.points);
   Handle_set lifted = at_rest;
   lifted.targets.col(2).array() += 0.1 * diagonal(mesh.points);

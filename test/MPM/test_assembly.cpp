@@ -20,6 +20,10 @@
 
 #include "Mesh_checks.h"
 
+#include "Point_distances.h"
+
+#include "Part_graph_lookup.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,7 +35,9 @@ using namespace CGAL::MPM;
 
 namespace {
 
-const Morphable_part_model& model_of(Synthetic_family family)
+using mpm_test::edge_between;
+using mpm_test::node_of_type;
+const Morphable_part_model& model_with_repetitions(Synthetic_family family)
 {
   static std::map<Synthetic_family, Morphable_part_model> cache;
   auto it = cache.find(family);
@@ -47,8 +53,7 @@ const Morphable_part_model& model_of(Synthetic_family family)
   return it->second;
 }
 
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
-
+using mpm_test::diagonal;
 using mpm_test::border_edges;
 using mpm_test::self_intersects;
 
@@ -127,21 +132,6 @@ double check_edited(const Morphable_part_model& m, const Part_graph& g, const st
   return factor;
 }
 
-int node_of_type(const Morphable_part_model& m, const Part_graph& g, const std::string& type, int skip = 0)
-{
-  for(std::size_t i = 0; i < g.nodes.size(); ++i)
-    if(m.types[g.nodes[i].type].name == type && skip-- == 0) return int(i);
-  return -1;
-}
-
-int edge_between(const Part_graph& g, int a, int b)
-{
-  for(std::size_t k = 0; k < g.edges.size(); ++k)
-    if((g.edges[k].first == a && g.edges[k].second == b) || (g.edges[k].first == b && g.edges[k].second == a))
-      return int(k);
-  return -1;
-}
-
 // The energy per part may grow this much over the training graph's: an
 // edit asks parts to fit neighbours they were never seen with, but each
 // part still sits near its learned shape (a rigidly misplaced or crushed
@@ -157,7 +147,7 @@ class Reproduction : public ::testing::TestWithParam<Synthetic_family>
 // mesh is the training mesh (through the node maps), and the solver stays.
 TEST_P(Reproduction, training_graph_gives_the_training_mesh)
 {
-  const Morphable_part_model& m = model_of(GetParam());
+  const Morphable_part_model& m = model_with_repetitions(GetParam());
   const Assembly a = assemble(m, part_graph_of_example(m), training_assembly_options(m));
   EXPECT_EQ(a.mesh.number_of_vertices(), m.examples[0].mesh.number_of_vertices());
   EXPECT_EQ(a.mesh.number_of_faces(), m.examples[0].mesh.number_of_faces());
@@ -182,7 +172,7 @@ TEST(Assembly, placement_on_seams_reproduces_the_training_mesh)
 {
   for(Synthetic_family f : {Synthetic_family::hand, Synthetic_family::spider})
   {
-    const Morphable_part_model& m = model_of(f);
+    const Morphable_part_model& m = model_with_repetitions(f);
     Assembly_options o = training_assembly_options(m);
     o.placements.clear();
     const Assembly a = assemble(m, part_graph_of_example(m), o);
@@ -194,7 +184,7 @@ TEST(Assembly, placement_on_seams_reproduces_the_training_mesh)
 
 TEST(Assembly, hand_with_an_inserted_finger_segment)
 {
-  const Morphable_part_model& m = model_of(Synthetic_family::hand);
+  const Morphable_part_model& m = model_with_repetitions(Synthetic_family::hand);
   EXPECT_EQ(border_edges(m.examples[0].mesh.triangles), 0);
   const double train = check_edited(m, part_graph_of_example(m), "hand training graph");
   EXPECT_NEAR(train, 1., 1e-12);
@@ -213,7 +203,7 @@ TEST(Assembly, hand_with_an_inserted_finger_segment)
 
 TEST(Assembly, spider_with_legs_removed_added_and_lengthened)
 {
-  const Morphable_part_model& m = model_of(Synthetic_family::spider);
+  const Morphable_part_model& m = model_with_repetitions(Synthetic_family::spider);
   Part_graph g = part_graph_of_example(m);
   int root = root_node(g);
   // Two legs off, one leg back at a freed site: seven legs.
@@ -258,7 +248,7 @@ TEST(Assembly, spider_with_legs_removed_added_and_lengthened)
 // beside it instead of staying behind (it was not in the problem before).
 TEST(Assembly, a_capped_hole_deforms_with_its_part)
 {
-  const Morphable_part_model& m = model_of(Synthetic_family::spider);
+  const Morphable_part_model& m = model_with_repetitions(Synthetic_family::spider);
   Part_graph g = part_graph_of_example(m);
   remove_branch(m, g, node_of_type(m, g, "coxa", 0), root_node(g));
   Assembly a = assemble(m, g);
@@ -302,7 +292,7 @@ TEST(Assembly, a_capped_hole_deforms_with_its_part)
 
 TEST(Assembly, hexa_grid_closed_ring_of_tiles)
 {
-  const Morphable_part_model& m = model_of(Synthetic_family::hexa_grid);
+  const Morphable_part_model& m = model_with_repetitions(Synthetic_family::hexa_grid);
   Part_graph g = part_graph_of_example(m);
   // The six neighbours of an inner tile form a ring.
   int center = -1;
@@ -343,7 +333,7 @@ TEST(Assembly, hexa_grid_closed_ring_of_tiles)
 
 TEST(Assembly, invalid_graphs_and_options_are_rejected)
 {
-  const Morphable_part_model& m = model_of(Synthetic_family::hand);
+  const Morphable_part_model& m = model_with_repetitions(Synthetic_family::hand);
   Part_graph g = part_graph_of_example(m);
   g.edges[0].rule = g.edges[1].rule == g.edges[0].rule ? g.edges[2].rule : g.edges[1].rule;
   EXPECT_THROW(assemble(m, g), Input_error);
@@ -356,7 +346,7 @@ TEST(Assembly, spawned_graphs_are_valid_finite_and_reproducible)
 {
   for(Synthetic_family f : {Synthetic_family::hand, Synthetic_family::hexa_grid})
   {
-    const Morphable_part_model& m = model_of(f);
+    const Morphable_part_model& m = model_with_repetitions(f);
     Spawn_options o;
     o.count = 4;
     o.seed = 11;

@@ -153,7 +153,7 @@ std::vector<std::string> learn_and_drag(const Labeled_mesh& lm, std::vector<int>
   return warnings;
 }
 
-const std::string triangle_vertices = "0 0 0\n1 0 0\n0 1 0\n";
+using mpm_test::triangle_vertices;
 
 } // namespace
 

@@ -30,10 +30,9 @@ namespace {
 
 using mpm_test::diagonal;
 using mpm_test::Learned;
-
 const Learned& learned(Synthetic_family family) { return mpm_test::learned(family, 2000); }
 
-double max_distance(const Point_matrix& a, const Point_matrix& b) { return (a - b).rowwise().norm().maxCoeff(); }
+using mpm_test::max_distance;
 
 // Fewer ARAP iterations than the default keep the suite fast; the tests
 // below do not depend on ARAP's convergence.

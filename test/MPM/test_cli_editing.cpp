@@ -8,6 +8,8 @@
 
 #include "Tool_test_support.h"
 
+#include "Point_distances.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -34,13 +36,8 @@ using CGAL::MPM::Point_matrix;
 using mpm_test::quote;
 using mpm_test::Run_result;
 using mpm_test::slurp;
-
-double diagonal(const Point_matrix& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
-
-double max_distance(const Point_matrix& a, const Point_matrix& b)
-{
-  return (a - b).rowwise().norm().maxCoeff();
-}
+using mpm_test::diagonal;
+using mpm_test::max_distance;
 
 // One hand model learned once for the whole suite (synth and learn dominate
 // the run time).

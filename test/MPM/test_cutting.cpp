@@ -32,13 +32,11 @@
 namespace {
 
 using namespace CGAL::MPM;
+using mpm_test::small_hand;
 using mpm_test::hand_cuts;
 using mpm_test::inner_vertex;
 using mpm_test::seam_loop;
 using mpm_test::sparse;
-
-// The 3k-vertex hand, shared with the suites that learn it.
-const Synthetic_model& small_hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth; }
 
 double agreement(const std::vector<int>& a, const std::vector<int>& b)
 {

@@ -23,6 +23,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include "Learned_models.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -39,16 +41,7 @@
 namespace {
 
 using namespace CGAL::MPM;
-
-const Synthetic_model& small_hand()
-{
-  static const Synthetic_model model = [] {
-    Synthetic_options o;
-    o.vertices = 3000;
-    return make_synthetic_model(Synthetic_family::hand, o);
-  }();
-  return model;
-}
+using mpm_test::small_hand;
 
 const std::vector<Correspondence_type_report>& hand_reports()
 {

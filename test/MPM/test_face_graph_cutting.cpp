@@ -33,16 +33,14 @@
 namespace {
 
 using namespace CGAL::MPM;
+using mpm_test::small_hand;
 using Kernel = CGAL::Simple_cartesian<double>;
-
-// The synthetic hand with its labels removed.
-const Labeled_mesh& hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth.mesh; }
 
 // What the indexed-mesh path gives on the same points: the reference each
 // mesh type is held to.
-struct Reference
+struct Cut_reference
 {
-  explicit Reference(const Indexed_mesh& mesh)
+  explicit Cut_reference(const Indexed_mesh& mesh)
     : proposal(cut_at_proposed_joints(mesh)), clicks(cut_vertices(proposal)), clicked(cut_at_vertices(mesh, clicks)),
       types(propose_part_types(proposal.cutting.mesh))
   {}
@@ -64,11 +62,11 @@ template <class Mesh>
 void expect_indexed_cuts()
 {
   Mesh g;
-  copy_to_face_graph(hand().mesh, g);
-  const Reference ref(to_indexed_mesh(g));
+  copy_to_face_graph(small_hand().mesh.mesh, g);
+  const Cut_reference ref(to_indexed_mesh(g));
   // The reference is a real segmentation of the hand, not a trivial one.
   ASSERT_GE(ref.proposal.cutting.cuts.size(), 10u);
-  EXPECT_LT(rand_index_error(hand().mesh, ref.proposal.cutting.mesh.face_labels, hand().face_labels), 0.15);
+  EXPECT_LT(rand_index_error(small_hand().mesh.mesh, ref.proposal.cutting.mesh.face_labels, small_hand().mesh.face_labels), 0.15);
 
   auto proposed = get(CGAL::dynamic_face_property_t<int>(), g);
   const Joint_proposal p = cut_at_proposed_joints(g, proposed);
@@ -122,7 +120,7 @@ TEST(FaceGraphCutting, BadClicksAreInputErrors)
 {
   using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
   Mesh g;
-  copy_to_face_graph(hand().mesh, g);
+  copy_to_face_graph(small_hand().mesh.mesh, g);
   auto labels = get(CGAL::dynamic_face_property_t<int>(), g);
   const std::vector<Mesh::Vertex_index> outside = {Mesh::Vertex_index(Mesh::size_type(num_vertices(g) + 5))};
   try {

@@ -30,11 +30,10 @@
 namespace {
 
 using namespace CGAL::MPM;
+using mpm_test::small_hand;
 using Kernel = CGAL::Simple_cartesian<double>;
 using Surface_mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Polyhedron = CGAL::Polyhedron_3<Kernel>;
-
-const Synthetic_model& hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth; }
 
 // Three tip vertices of the example pulled sideways, the wrist held.
 Handle_set tip_handles(const Indexed_mesh& mesh)
@@ -51,7 +50,7 @@ Handle_set tip_handles(const Indexed_mesh& mesh)
 }
 
 // What the indexed-mesh path gives: the reference each mesh type is held to.
-struct Reference
+struct Pipeline_reference
 {
   Cutting_result cut;
   Morphable_part_model model;
@@ -59,12 +58,12 @@ struct Reference
   Assembly assembly;
 };
 
-const Reference& reference()
+const Pipeline_reference& reference()
 {
-  static const Reference r = [] {
-    Reference ref;
-    ref.cut = cut_mesh(hand().mesh.mesh, mpm_test::hand_cuts(hand()), Cutting_options(), "hand");
-    ref.model = learn_morphable_part_model(ref.cut.mesh, hand().annotation);
+  static const Pipeline_reference r = [] {
+    Pipeline_reference ref;
+    ref.cut = cut_mesh(small_hand().mesh.mesh, mpm_test::hand_cuts(small_hand()), Cutting_options(), "hand");
+    ref.model = learn_morphable_part_model(ref.cut.mesh, small_hand().annotation);
     ref.deformed = internal::solve_edit(ref.model, make_deformation_problem(ref.model), tip_handles(ref.model.examples[0].mesh));
     ref.assembly = assemble(ref.model, part_graph_of_example(ref.model));
     return ref;
@@ -98,18 +97,18 @@ void run_pipeline(double tolerance)
 {
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using Point = typename boost::property_traits<typename CGAL::GetVertexPointMap<Mesh>::type>::value_type;
-  const Reference& ref = reference();
-  const double diagonal = (hand().mesh.mesh.points.colwise().maxCoeff() - hand().mesh.mesh.points.colwise().minCoeff()).norm();
+  const Pipeline_reference& ref = reference();
+  const double diagonal = (small_hand().mesh.mesh.points.colwise().maxCoeff() - small_hand().mesh.mesh.points.colwise().minCoeff()).norm();
 
   // Cut: labels land in a face property of the user's mesh.
   Mesh input;
-  copy_to_face_graph(hand().mesh.mesh, input);
+  copy_to_face_graph(small_hand().mesh.mesh, input);
   auto labels = get(CGAL::dynamic_face_property_t<int>(), input);
-  cut_mesh(input, mpm_test::hand_cuts(hand()), labels);
+  cut_mesh(input, mpm_test::hand_cuts(small_hand()), labels);
   EXPECT_EQ(face_labels_from_map(input, labels), ref.cut.mesh.face_labels);
 
   // Learn from the mesh and its label map.
-  const Morphable_part_model model = learn_morphable_part_model(input, labels, hand().annotation);
+  const Morphable_part_model model = learn_morphable_part_model(input, labels, small_hand().annotation);
   ASSERT_EQ(model.types.size(), ref.model.types.size());
   ASSERT_EQ(model.rules.size(), ref.model.rules.size());
 
@@ -181,7 +180,7 @@ TEST(FaceGraphPipeline, open_mesh_gives_the_indexed_result)
 
 TEST(FaceGraphPipeline, results_need_the_example_mesh)
 {
-  const Reference& ref = reference();
+  const Pipeline_reference& ref = reference();
   Surface_mesh other;
   Indexed_mesh small;
   small.points = Point_matrix::Random(4, 3);

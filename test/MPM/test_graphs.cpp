@@ -17,13 +17,13 @@ using namespace CGAL::MPM;
 
 namespace {
 
-const Morphable_part_model& hand() { return mpm_test::learned(Synthetic_family::hand, 3000).model; }
+using mpm_test::small_hand_model;
 
 } // namespace
 
 TEST(Model_grammar, built_by_learning_and_reading_and_kept_by_copies)
 {
-  const Morphable_part_model& model = hand();
+  const Morphable_part_model& model = small_hand_model();
   const Shape_grammar& grammar = model.grammar();
   EXPECT_EQ(grammar.number_of_rules(), model.rules.size());
   EXPECT_TRUE(grammar.describes(model));
@@ -37,7 +37,7 @@ TEST(Model_grammar, built_by_learning_and_reading_and_kept_by_copies)
 
 TEST(Model_grammar, changed_rules_need_an_update)
 {
-  Morphable_part_model model = hand();
+  Morphable_part_model model = small_hand_model();
   const Docking_rule rule = model.rules.front();
   model.rules.push_back(rule);
   EXPECT_THROW(model.grammar(), std::logic_error);
@@ -45,12 +45,12 @@ TEST(Model_grammar, changed_rules_need_an_update)
   EXPECT_EQ(model.grammar().rules_between(rule.first, rule.second).size(), 2u);
   model.rules.back().second = model.rules.back().first;
   EXPECT_THROW(model.grammar(), std::logic_error);
-  EXPECT_EQ(hand().grammar().rules_between(rule.first, rule.second).size(), 1u); // the copy's grammar
+  EXPECT_EQ(small_hand_model().grammar().rules_between(rule.first, rule.second).size(), 1u); // the copy's grammar
 }
 
 TEST(Model_grammar, sites_by_index)
 {
-  const Morphable_part_model& model = hand();
+  const Morphable_part_model& model = small_hand_model();
   const Shape_grammar& grammar = model.grammar();
   std::size_t v = 0;
   for(int t = 0; t < int(model.types.size()); ++t)
@@ -65,7 +65,7 @@ TEST(Model_grammar, sites_by_index)
 
 TEST(Part_adjacency_graph, nodes_and_dockings_in_order)
 {
-  const Part_graph graph = part_graph_of_example(hand(), 0);
+  const Part_graph graph = part_graph_of_example(small_hand_model(), 0);
   const Part_adjacency_graph g = adjacency_graph(graph);
   ASSERT_EQ(boost::num_vertices(g), graph.nodes.size());
   ASSERT_EQ(boost::num_edges(g), graph.edges.size());

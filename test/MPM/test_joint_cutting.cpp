@@ -33,8 +33,7 @@
 namespace {
 
 using namespace CGAL::MPM;
-
-const Synthetic_model& small_hand() { return mpm_test::learned(Synthetic_family::hand, 3000).truth; }
+using mpm_test::small_hand;
 
 double mean_edge_length(const Indexed_mesh& m)
 {

@@ -25,7 +25,7 @@ Indexed_mesh tetrahedron()
   return m;
 }
 
-const std::string triangle_vertices = "0 0 0\n1 0 0\n0 1 0\n";
+using mpm_test::triangle_vertices;
 
 } // namespace
 

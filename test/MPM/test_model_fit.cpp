@@ -17,12 +17,11 @@
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
+#include "Io_test_support.h"
 #include "Tool_test_support.h"
 #include "Psb_meshes.h"
 
 #include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -263,46 +262,31 @@ TEST(Model_fit, bad_input_names_mesh_and_segment)
   }
 }
 
-struct Scratch_directory
-{
-  std::filesystem::path dir;
-  Scratch_directory()
-  {
-    dir = std::filesystem::temp_directory_path() /
-          ("mpm_test_model_fit_" + std::to_string(::getpid()) + "_" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  ~Scratch_directory() { std::filesystem::remove_all(dir); }
-  std::string operator/(const std::string& name) const { return (dir / name).string(); }
-};
-
 TEST(Model_fit, command_line_fit_and_bad_file)
 {
   const Hand& hand = synthetic_hand();
-  const Scratch_directory d;
+  const mpm_test::Scratch_directory d;
   const Synthetic_model pose = held_out_pose(7);
-  save_model(hand.model, d / "hand.mpm");
-  write_mesh_file(pose.mesh.mesh, d / "pose.off");
-  write_seg_file(pose.mesh.face_labels, d / "pose.seg");
-  write_annotation(pose.annotation, d / "pose.json");
+  save_model(hand.model, d.file("hand.mpm"));
+  write_mesh_file(pose.mesh.mesh, d.file("pose.off"));
+  write_seg_file(pose.mesh.face_labels, d.file("pose.seg"));
+  write_annotation(pose.annotation, d.file("pose.json"));
   const mpm_test::Run_result r = mpm_test::run_tool(
-    d.dir, "fit " + mpm_test::quote(d / "hand.mpm") + " " + mpm_test::quote(d / "pose.off") + " -o " +
-             mpm_test::quote(d / "fitted.ply") + " --json");
+    d.path(), "fit " + mpm_test::quote(d.file("hand.mpm")) + " " + mpm_test::quote(d.file("pose.off")) + " -o " +
+             mpm_test::quote(d.file("fitted.ply")) + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"rms_over_mesh_diagonal\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"type\": \"distal\""), std::string::npos) << r.out;
-  EXPECT_TRUE(std::filesystem::is_regular_file(d / "fitted.ply"));
-  const Mesh_file fitted = read_mesh_file(d / "fitted.ply");
+  EXPECT_TRUE(std::filesystem::is_regular_file(d.file("fitted.ply")));
+  const Mesh_file fitted = read_mesh_file(d.file("fitted.ply"));
   EXPECT_EQ(fitted.mesh.number_of_faces(), pose.mesh.mesh.number_of_faces());
 
   const mpm_test::Run_result bad =
-    mpm_test::run_tool(d.dir, "fit " + mpm_test::quote(d / "hand.mpm") + " " + mpm_test::quote(d / "missing.off"));
+    mpm_test::run_tool(d.path(), "fit " + mpm_test::quote(d.file("hand.mpm")) + " " + mpm_test::quote(d.file("missing.off")));
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.err.find("missing.off"), std::string::npos) << bad.err;
   const mpm_test::Run_result unknown = mpm_test::run_tool(
-    d.dir, "fit " + mpm_test::quote(d / "hand.mpm") + " " + mpm_test::quote(d / "pose.off") + " --segment 42");
+    d.path(), "fit " + mpm_test::quote(d.file("hand.mpm")) + " " + mpm_test::quote(d.file("pose.off")) + " --segment 42");
   EXPECT_EQ(unknown.status, 1);
   EXPECT_NE(unknown.err.find("segment 42: no face has this label"), std::string::npos) << unknown.err;
 }

@@ -7,6 +7,10 @@
 #include <CGAL/MPM/Synthetic/Synthetic_model.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
 
+#include "Learned_models.h"
+
+#include "Part_graph_lookup.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -18,39 +22,12 @@ using json = nlohmann::json;
 
 namespace {
 
-const Morphable_part_model& model_of(Synthetic_family family)
-{
-  static std::map<Synthetic_family, Morphable_part_model> cache;
-  auto it = cache.find(family);
-  if(it == cache.end())
-  {
-    Synthetic_options o;
-    o.vertices = 3000;
-    const Synthetic_model s = make_synthetic_model(family, o);
-    it = cache.emplace(family, learn_morphable_part_model(s.mesh, s.annotation)).first;
-  }
-  return it->second;
-}
-
-const Morphable_part_model& hand() { return model_of(Synthetic_family::hand); }
-
-int node_of_type(const Morphable_part_model& m, const Part_graph& g, const std::string& type, int skip = 0)
-{
-  for(std::size_t i = 0; i < g.nodes.size(); ++i)
-    if(m.types[g.nodes[i].type].name == type && skip-- == 0) return int(i);
-  return -1;
-}
-
-int edge_between(const Part_graph& g, int a, int b)
-{
-  for(std::size_t k = 0; k < g.edges.size(); ++k)
-    if((g.edges[k].first == a && g.edges[k].second == b) || (g.edges[k].first == b && g.edges[k].second == a))
-      return int(k);
-  return -1;
-}
+using mpm_test::edge_between;
+using mpm_test::node_of_type;
+using mpm_test::small_hand_model;
 
 // The error's message for a JSON text, or "" when it parses.
-std::string parse_error(const json& j, const Morphable_part_model& m = hand())
+std::string parse_error(const json& j, const Morphable_part_model& m = small_hand_model())
 {
   try {
     parse_part_graph(j.dump(), m, "g.json");
@@ -61,7 +38,7 @@ std::string parse_error(const json& j, const Morphable_part_model& m = hand())
   return "";
 }
 
-json training_json(const Morphable_part_model& m = hand())
+json training_json(const Morphable_part_model& m = small_hand_model())
 {
   return json::parse(part_graph_to_json(m, part_graph_of_example(m)));
 }
@@ -72,7 +49,7 @@ TEST(Part_graph_format, training_graphs_are_valid_and_round_trip)
 {
   for(Synthetic_family f : all_synthetic_families())
   {
-    const Morphable_part_model& m = model_of(f);
+    const Morphable_part_model& m = mpm_test::learned(f, 3000).model;
     const Part_graph g = part_graph_of_example(m);
     EXPECT_NO_THROW(validate_part_graph(m, g)) << family_name(f);
     const Part_graph back = parse_part_graph(part_graph_to_json(m, g), m);
@@ -94,7 +71,7 @@ TEST(Part_graph_format, training_graphs_are_valid_and_round_trip)
 
 TEST(Part_graph_format, defaults_and_edges_by_sites)
 {
-  const Morphable_part_model& m = hand();
+  const Morphable_part_model& m = small_hand_model();
   json j = training_json();
   for(json& node : j["nodes"]) node.erase("coordinates");
   // Name the dockings by sites only, with first and second given reversed.
@@ -118,7 +95,7 @@ TEST(Part_graph_validation, rejects_an_empty_graph)
 {
   EXPECT_NE(parse_error({{"format", "cgal-mpm-part-graph"}, {"version", 1}, {"nodes", json::array()}})
               .find("no node"), std::string::npos);
-  EXPECT_THROW(validate_part_graph(hand(), Part_graph()), Input_error);
+  EXPECT_THROW(validate_part_graph(small_hand_model(), Part_graph()), Input_error);
 }
 
 TEST(Part_graph_validation, rejects_an_unknown_part_type)
@@ -135,10 +112,10 @@ TEST(Part_graph_validation, rejects_coordinates_of_the_wrong_length_or_not_finit
   json j = training_json();
   j["nodes"][1]["coordinates"].push_back(0.5);
   EXPECT_NE(parse_error(j).find("node 1.coordinates"), std::string::npos) << parse_error(j);
-  Part_graph g = part_graph_of_example(hand());
+  Part_graph g = part_graph_of_example(small_hand_model());
   g.nodes[1].coordinates[0] = std::nan("");
   try {
-    validate_part_graph(hand(), g);
+    validate_part_graph(small_hand_model(), g);
     FAIL();
   } catch(const Input_error& e) {
     EXPECT_NE(std::string(e.what()).find("node 1"), std::string::npos);
@@ -172,7 +149,7 @@ TEST(Part_graph_validation, rejects_a_node_docked_to_itself)
 
 TEST(Part_graph_validation, rejects_a_docking_that_is_not_a_rule)
 {
-  const Morphable_part_model& m = hand();
+  const Morphable_part_model& m = small_hand_model();
   const Part_graph t = part_graph_of_example(m);
   // A palm-proximal rule used between a middle and a distal.
   json j = training_json();
@@ -198,7 +175,7 @@ TEST(Part_graph_validation, rejects_a_docking_that_is_not_a_rule)
 
 TEST(Part_graph_validation, rejects_a_docking_site_used_twice)
 {
-  const Morphable_part_model& m = hand();
+  const Morphable_part_model& m = small_hand_model();
   Part_graph g = part_graph_of_example(m);
   // A second distal docked at the same site of a middle.
   const int middle = node_of_type(m, g, "middle"), distal = node_of_type(m, g, "distal");
@@ -229,7 +206,7 @@ TEST(Part_graph_validation, rejects_a_graph_in_pieces_and_malformed_json)
   j = training_json();
   j["format"] = "cgal-mpm-handles";
   EXPECT_NE(parse_error(j).find("format"), std::string::npos);
-  EXPECT_THROW(parse_part_graph("{\"nodes\": [", hand(), "g"), Input_error);
+  EXPECT_THROW(parse_part_graph("{\"nodes\": [", small_hand_model(), "g"), Input_error);
   j = training_json();
   j["edges"][0].erase("rule");
   j["edges"][0].erase("second_site");
@@ -238,7 +215,7 @@ TEST(Part_graph_validation, rejects_a_graph_in_pieces_and_malformed_json)
 
 TEST(Part_graph_editing, repetition_rules_lengthen_chains)
 {
-  Morphable_part_model m = hand();
+  Morphable_part_model m = small_hand_model();
   const std::size_t learned = m.rules.size();
   const std::vector<int> added = add_repetition_rules(m);
   // proximal and middle have two sites each; distal and palm do not qualify.
@@ -258,7 +235,7 @@ TEST(Part_graph_editing, repetition_rules_lengthen_chains)
   const int k = edge_between(g, middle, distal);
   // Without the derived rules nothing docks between a middle and a distal.
   Part_graph h = g;
-  EXPECT_THROW(insert_segment(hand(), h, k), Input_error);
+  EXPECT_THROW(insert_segment(small_hand_model(), h, k), Input_error);
   const int n = insert_segment(m, g, k);
   EXPECT_EQ(m.types[g.nodes[n].type].name, "middle");
   EXPECT_EQ(g.nodes[n].coordinates, g.nodes[middle].coordinates);
@@ -276,7 +253,7 @@ TEST(Part_graph_editing, repetition_rules_lengthen_chains)
 
 TEST(Part_graph_editing, remove_and_duplicate_branches_and_close_cycles)
 {
-  const Morphable_part_model& m = model_of(Synthetic_family::spider);
+  const Morphable_part_model& m = mpm_test::learned(Synthetic_family::spider, 3000).model;
   Part_graph g = part_graph_of_example(m);
   const int root = root_node(g);
   EXPECT_EQ(m.types[g.nodes[root].type].name, "body");
@@ -298,7 +275,7 @@ TEST(Part_graph_editing, remove_and_duplicate_branches_and_close_cycles)
   EXPECT_TRUE(free_sites(m, g, body).empty());
 
   // Hexa grid: drop one docking of a cycle and close it again.
-  const Morphable_part_model& hexa = model_of(Synthetic_family::hexa_grid);
+  const Morphable_part_model& hexa = mpm_test::learned(Synthetic_family::hexa_grid, 3000).model;
   Part_graph h = part_graph_of_example(hexa);
   const Part_edge dropped = h.edges.back();
   h.edges.pop_back();
@@ -312,7 +289,7 @@ TEST(Part_graph_editing, random_graphs_are_valid_and_reproducible)
 {
   for(Synthetic_family f : {Synthetic_family::hand, Synthetic_family::spider, Synthetic_family::hexa_grid})
   {
-    Morphable_part_model m = model_of(f);
+    Morphable_part_model m = mpm_test::learned(f, 3000).model;
     add_repetition_rules(m);
     const Part_graph start = part_graph_of_example(m);
     std::mt19937 a(7), b(7);
@@ -341,7 +318,7 @@ TEST(Part_graph_validation, rejects_a_cycle_whose_seams_do_not_meet)
 {
   // A tile inserted into a docking of the grid: its corners would have to be
   // the corners its two neighbours already share with their other neighbours.
-  const Morphable_part_model& m = model_of(Synthetic_family::hexa_grid);
+  const Morphable_part_model& m = mpm_test::learned(Synthetic_family::hexa_grid, 3000).model;
   Part_graph g = part_graph_of_example(m);
   std::vector<int> degree(g.nodes.size(), 0);
   for(const Part_edge& e : g.edges) ++degree[e.first], ++degree[e.second];
@@ -361,7 +338,7 @@ TEST(Part_graph_validation, rejects_a_cycle_whose_seams_do_not_meet)
 // caricature doubles each instance's distance from it.
 TEST(Part_graph_editing, scaled_coordinates_move_instances_about_their_mean)
 {
-  const Part_graph example = part_graph_of_example(hand(), 0);
+  const Part_graph example = part_graph_of_example(small_hand_model(), 0);
   double largest = 0.;
   for(const Part_node& node : example.nodes) largest = std::max(largest, node.coordinates.norm());
   ASSERT_GT(largest, 0.) << "the hand's instances are not all at their type's mean";

@@ -14,6 +14,8 @@
 #include "Tool_test_support.h"
 #include "Psb_meshes.h"
 
+#include "Learned_models.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -227,13 +229,6 @@ TEST(Proposal, AllPsbMeshesTogetherPoolByName)
 
 namespace {
 
-Labeled_mesh small_hand()
-{
-  Synthetic_options o;
-  o.vertices = 3000;
-  return make_synthetic_model(Synthetic_family::hand, o).mesh;
-}
-
 TEST(Proposal, OctopusArmPiecesOfDifferentSizeAreNotPooled)
 {
   // By position, every arm's first segment is `chain1`. octopus_124's are
@@ -265,7 +260,7 @@ TEST(Proposal, OctopusArmPiecesOfDifferentSizeAreNotPooled)
 
 TEST(Bad_segmentation, DisconnectedSegmentIsNamed)
 {
-  Labeled_mesh m = small_hand();
+  Labeled_mesh m = mpm_test::small_hand().mesh;
   m.source = "hand.off";
   const Part_type_proposal p = propose_part_types(m);
   // Two fingertips under one label: two pieces.
@@ -284,7 +279,7 @@ TEST(Bad_segmentation, DisconnectedSegmentIsNamed)
 
 TEST(Bad_segmentation, LabelsNotCoveringTheMesh)
 {
-  Labeled_mesh m = small_hand();
+  Labeled_mesh m = mpm_test::small_hand().mesh;
   m.source = "hand.off";
   m.face_labels.pop_back();
   const std::string message = message_of([&] { validate_segmentation(m); });
@@ -294,7 +289,7 @@ TEST(Bad_segmentation, LabelsNotCoveringTheMesh)
 
 TEST(Bad_segmentation, NonManifoldEdgeAndVertexAreNamed)
 {
-  Labeled_mesh m = small_hand();
+  Labeled_mesh m = mpm_test::small_hand().mesh;
   m.source = "hand.off";
   // A fin on an edge of face 0: that edge now has three faces.
   const Triangle t = m.mesh.triangles[0];

@@ -20,12 +20,11 @@
 namespace CGAL {
 namespace MPM {
 
+using internal::part_graph_source;
 using internal::quoted;
 using internal::site_text;
 
 namespace {
-
-const char* const source = "part graph";
 
 // The boundary loop of a site, directed as the part's boundary half-edges.
 std::vector<int> boundary_loop(const Part_type& type, const Docking_site& site, const std::string& element)
@@ -38,11 +37,11 @@ std::vector<int> boundary_loop(const Part_type& type, const Docking_site& site, 
   for(const auto& [u, v] : half_edges)
     if(!half_edges.count({v, u}) && in_site.count(u) && in_site.count(v))
     {
-      if(next.count(u)) throw Input_error(source, element, "the site is not one simple boundary loop");
+      if(next.count(u)) throw Input_error(part_graph_source, element, "the site is not one simple boundary loop");
       next[u] = v;
     }
   std::vector<int> loop;
-  if(next.size() != in_site.size()) throw Input_error(source, element, "the site is not one boundary loop");
+  if(next.size() != in_site.size()) throw Input_error(part_graph_source, element, "the site is not one boundary loop");
   int v = next.begin()->first;
   for(std::size_t k = 0; k < next.size(); ++k)
   {
@@ -50,14 +49,14 @@ std::vector<int> boundary_loop(const Part_type& type, const Docking_site& site, 
     v = next.at(v);
   }
   if(v != loop.front() || std::set<int>(loop.begin(), loop.end()).size() != loop.size())
-    throw Input_error(source, element, "the site is not one simple boundary loop");
+    throw Input_error(part_graph_source, element, "the site is not one simple boundary loop");
   return loop;
 }
 
 const Part_type& checked_type(const Morphable_part_model& model, int type)
 {
   if(type < 0 || type >= int(model.types.size()))
-    throw Input_error(source, "part type " + std::to_string(type), "does not exist");
+    throw Input_error(part_graph_source, "part type " + std::to_string(type), "does not exist");
   return model.types[type];
 }
 
@@ -72,7 +71,7 @@ std::vector<double> arc_parameters(const Point_matrix& mean, const std::vector<i
     t[i] = length;
     length += (mean.row(loop[(i + 1) % n]) - mean.row(loop[i])).norm();
   }
-  if(!(length > 0.)) throw Input_error(source, "docking site", "its boundary loop has zero length");
+  if(!(length > 0.)) throw Input_error(part_graph_source, "docking site", "its boundary loop has zero length");
   for(double& x : t) x /= length;
   return t;
 }
@@ -286,10 +285,10 @@ Docking_rule derive_docking_rule(const Morphable_part_model& model, const Site_r
   for(const auto& [type, site] : {std::make_pair(&type_a, a), std::make_pair(&type_b, b)})
   {
     if(site.site < 0 || site.site >= int(type->sites.size()))
-      throw Input_error(source, "part type " + quoted(type->name),
+      throw Input_error(part_graph_source, "part type " + quoted(type->name),
                         "has no docking site " + std::to_string(site.site));
     if(type->sites[site.site].kind != Docking_kind::boundary)
-      throw Input_error(source, site_text(model, site), "is not a boundary site (a derived rule docks two boundary loops)");
+      throw Input_error(part_graph_source, site_text(model, site), "is not a boundary site (a derived rule docks two boundary loops)");
   }
   const std::vector<int> la = boundary_loop(type_a, type_a.sites[a.site], site_text(model, a));
   const std::vector<int> lb = boundary_loop(type_b, type_b.sites[b.site], site_text(model, b));
@@ -319,10 +318,10 @@ Docking_rule derive_repetition_rule(const Morphable_part_model& model, int type_
   const std::string element = "part type " + quoted(type.name);
   if(site_a == site_b || site_a < 0 || site_b < 0 || site_a >= int(type.sites.size()) ||
      site_b >= int(type.sites.size()))
-    throw Input_error(source, element, "a repetition rule needs two distinct sites of the type");
+    throw Input_error(part_graph_source, element, "a repetition rule needs two distinct sites of the type");
   if(site_b < site_a) std::swap(site_a, site_b);
   if(type.sites[site_a].kind != Docking_kind::boundary || type.sites[site_b].kind != Docking_kind::boundary)
-    throw Input_error(source, element, "a repetition rule docks two boundary sites");
+    throw Input_error(part_graph_source, element, "a repetition rule docks two boundary sites");
   return derive_docking_rule(model, {type_index, site_a}, {type_index, site_b});
 }
 

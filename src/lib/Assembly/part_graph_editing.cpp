@@ -19,12 +19,11 @@
 namespace CGAL {
 namespace MPM {
 
+using internal::part_graph_source;
 using internal::quoted;
 using internal::site_text;
 
 namespace {
-
-const char* const source = "part graph";
 
 std::string node_element(const Morphable_part_model& model, const Part_graph& graph, int n)
 {
@@ -34,7 +33,7 @@ std::string node_element(const Morphable_part_model& model, const Part_graph& gr
 void check_node(const Part_graph& graph, int node, const char* what)
 {
   if(node < 0 || node >= int(graph.nodes.size()))
-    throw Input_error(source, std::string(what) + " " + std::to_string(node),
+    throw Input_error(part_graph_source, std::string(what) + " " + std::to_string(node),
                       "does not exist (the graph has " + std::to_string(graph.nodes.size()) + " nodes)");
 }
 
@@ -114,9 +113,9 @@ int root_node(const Part_graph& graph)
 int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edge, int type)
 {
   if(edge < 0 || edge >= int(graph.edges.size()))
-    throw Input_error(source, "edge " + std::to_string(edge),
+    throw Input_error(part_graph_source, "edge " + std::to_string(edge),
                       "does not exist (the graph has " + std::to_string(graph.edges.size()) + " edges)");
-  if(type >= int(model.types.size())) throw Input_error(source, "part type " + std::to_string(type), "does not exist");
+  if(type >= int(model.types.size())) throw Input_error(part_graph_source, "part type " + std::to_string(type), "does not exist");
   const Part_edge old = graph.edges[edge];
   const int a = old.first, b = old.second;
   const Site_ref sa = model.rules[old.rule].first, sb = model.rules[old.rule].second;
@@ -162,8 +161,8 @@ int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edg
       }
   }
   if(!why.empty())
-    throw Input_error(source, "edge " + std::to_string(edge), "no inserted segment gives a valid graph: " + why);
-  throw Input_error(source, "edge " + std::to_string(edge),
+    throw Input_error(part_graph_source, "edge " + std::to_string(edge), "no inserted segment gives a valid graph: " + why);
+  throw Input_error(part_graph_source, "edge " + std::to_string(edge),
                     "no part type docks to both " + site_text(model, sa) + " and " + site_text(model, sb) +
                       (type >= 0 ? " among type " + quoted(model.types[type].name) : std::string()));
 }
@@ -199,7 +198,7 @@ std::vector<int> remove_segment(const Morphable_part_model& model, Part_graph& g
   check_node(graph, node, "node");
   const std::vector<int> incident = incident_dockings(adjacency_graph(graph), node);
   if(incident.size() != 2)
-    throw Input_error(source, node_element(model, graph, node),
+    throw Input_error(part_graph_source, node_element(model, graph, node),
                       "has " + std::to_string(incident.size()) +
                         " dockings; only a segment with two can be removed (remove the branch instead)");
   const Part_edge& e1 = graph.edges[incident[0]];
@@ -207,11 +206,11 @@ std::vector<int> remove_segment(const Morphable_part_model& model, Part_graph& g
   const int p = e1.first == node ? e1.second : e1.first;
   const int q = e2.first == node ? e2.second : e2.first;
   if(p == q)
-    throw Input_error(source, node_element(model, graph, node), "both its dockings lead to node " + std::to_string(p));
+    throw Input_error(part_graph_source, node_element(model, graph, node), "both its dockings lead to node " + std::to_string(p));
   const Site_ref sp = site_on_edge(model, e1, p), sq = site_on_edge(model, e2, q);
   const std::vector<int> rules = model.grammar().rules_between(sp, sq);
   if(rules.empty())
-    throw Input_error(source, node_element(model, graph, node),
+    throw Input_error(part_graph_source, node_element(model, graph, node),
                       "its neighbours cannot be reconnected: no rule docks " + site_text(model, sp) + " to " +
                         site_text(model, sq) + " (remove the branch instead)");
   graph.edges.push_back(oriented_edge(model, rules.front(), p, sp, q));
@@ -222,7 +221,7 @@ std::vector<int> branch_nodes(const Part_graph& graph, int node, int root)
 {
   check_node(graph, node, "node");
   check_node(graph, root, "root");
-  if(node == root) throw Input_error(source, "node " + std::to_string(node), "is the root: its branch is the whole graph");
+  if(node == root) throw Input_error(part_graph_source, "node " + std::to_string(node), "is the root: its branch is the whole graph");
   const Part_adjacency_graph g = adjacency_graph(graph);
   std::vector<boost::default_color_type> colour(graph.nodes.size(), boost::white_color);
   colour[node] = boost::black_color; // `node` blocks the way
@@ -248,14 +247,14 @@ int duplicate_branch(const Morphable_part_model& model, Part_graph& graph, int n
   for(int v : branch) copy_of[v] = 0;
   const std::vector<int> attaching = hanging_dockings(graph, node, branch);
   if(attaching.size() != 1)
-    throw Input_error(source, node_element(model, graph, node),
+    throw Input_error(part_graph_source, node_element(model, graph, node),
                       "its branch hangs by " + std::to_string(attaching.size()) + " dockings; a duplicated branch needs one");
   const Site_ref hanging = site_on_edge(model, graph.edges[attaching[0]], node);
   std::vector<int> sites = free_sites(model, graph, target);
   if(target_site >= 0)
   {
     if(std::find(sites.begin(), sites.end(), target_site) == sites.end())
-      throw Input_error(source, node_element(model, graph, target),
+      throw Input_error(part_graph_source, node_element(model, graph, target),
                         "site " + std::to_string(target_site) + " is not a free site of it");
     sites = {target_site};
   }
@@ -287,7 +286,7 @@ int duplicate_branch(const Morphable_part_model& model, Part_graph& graph, int n
     graph.edges.push_back(oriented_edge(model, rules.front(), target, {graph.nodes[target].type, s}, copy_of[node]));
     return copy_of[node];
   }
-  throw Input_error(source, node_element(model, graph, target),
+  throw Input_error(part_graph_source, node_element(model, graph, target),
                     "no free site of it docks to " + site_text(model, hanging));
 }
 
@@ -295,7 +294,7 @@ int close_cycle(const Morphable_part_model& model, Part_graph& graph, int a, int
 {
   check_node(graph, a, "node");
   check_node(graph, b, "node");
-  if(a == b) throw Input_error(source, node_element(model, graph, a), "cannot dock to itself");
+  if(a == b) throw Input_error(part_graph_source, node_element(model, graph, a), "cannot dock to itself");
   const Shape_grammar& grammar = model.grammar();
   std::vector<Part_edge> candidates;
   for(int sa : free_sites(model, graph, a))
@@ -315,7 +314,7 @@ int close_cycle(const Morphable_part_model& model, Part_graph& graph, int a, int
       }
     }
   if(candidates.empty())
-    throw Input_error(source, node_element(model, graph, a),
+    throw Input_error(part_graph_source, node_element(model, graph, a),
                       "no free site of it docks to a free site of " + node_element(model, graph, b));
   std::size_t best = 0;
   if(candidates.size() > 1)

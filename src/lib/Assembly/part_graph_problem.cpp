@@ -136,7 +136,7 @@ void split_border_edges(const Part_type& type, int node, Part_refinement& r)
         split.insert({std::min(edge.first, edge.second), std::max(edge.first, edge.second)});
       }
     if(!found)
-      throw Input_error("part graph", "node " + std::to_string(node) + " (" + type.name + ")",
+      throw Input_error(part_graph_source, "node " + std::to_string(node) + " (" + type.name + ")",
                         "a merged seam splits its edge " + std::to_string(edge.first) + " - " +
                           std::to_string(edge.second) + ", which is not a border edge of its type");
   }
@@ -224,7 +224,7 @@ Indexed_mesh stitch_part_graph(const Morphable_part_model& model, Part_graph& gr
       const int v = vertex_of_class[classes.find_set(offset[i] + l)];
       const auto [it, inserted] = local_of_vertex.insert({v, l});
       if(!inserted)
-        throw Input_error("part graph", "node " + std::to_string(i) + " (" + model.types[node.type].name + ")",
+        throw Input_error(part_graph_source, "node " + std::to_string(i) + " (" + model.types[node.type].name + ")",
                           "its dockings identify its local vertices " + std::to_string(it->second) + " and " +
                             std::to_string(l) + " (a cycle of dockings that does not close consistently)");
       node.vertices[l] = v;

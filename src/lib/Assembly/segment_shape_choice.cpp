@@ -4,6 +4,7 @@
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Assembly/Part_graph_editing.h>
 #include <CGAL/MPM/Editing/Surface_soundness.h>
+#include <CGAL/MPM/internal/Part_graph_problem.h>
 
 #include <string>
 #include <utility>
@@ -31,7 +32,7 @@ int crossings_of_placement(const Morphable_part_model& model, const Part_graph& 
 int choose_segment_shape(const Morphable_part_model& model, Part_graph& graph, int node)
 {
   if(node < 0 || node >= static_cast<int>(graph.nodes.size()))
-    throw Input_error("part graph", "node " + std::to_string(node),
+    throw Input_error(internal::part_graph_source, "node " + std::to_string(node),
                       "does not exist (the graph has " + std::to_string(graph.nodes.size()) + " nodes)");
   const Shape_space& space = model.types[graph.nodes[std::size_t(node)].type].space;
   std::vector<Eigen::VectorXd> candidates{graph.nodes[std::size_t(node)].coordinates,

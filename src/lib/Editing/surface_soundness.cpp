@@ -31,14 +31,14 @@ namespace MPM {
 
 namespace {
 
-using Mesh = internal::Exact_predicates_surface_mesh;
-using Kernel = CGAL::Kernel_traits<Mesh::Point>::Kernel;
-using Point_3 = Mesh::Point;
+using Exact_mesh = internal::Exact_predicates_surface_mesh;
+using Exact_kernel = CGAL::Kernel_traits<Exact_mesh::Point>::Kernel;
+using Exact_point = Exact_mesh::Point;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-std::vector<Point_3> points_of(const Indexed_mesh& mesh)
+std::vector<Exact_point> points_of(const Indexed_mesh& mesh)
 {
-  std::vector<Point_3> p;
+  std::vector<Exact_point> p;
   for(int i = 0; i < mesh.number_of_vertices(); ++i) p.emplace_back(mesh.points(i, 0), mesh.points(i, 1), mesh.points(i, 2));
   return p;
 }
@@ -59,12 +59,12 @@ Eigen::Vector3d normal_of(const Indexed_mesh& mesh, const Triangle& t)
 
 // Only the surface counts: a soup that is no polygon mesh (a face turned
 // the other way, a non-manifold edge) is oriented and split first.
-Mesh surface_mesh_of(const Indexed_mesh& m)
+Exact_mesh surface_mesh_of(const Indexed_mesh& m)
 {
-  std::vector<Point_3> points = points_of(m);
+  std::vector<Exact_point> points = points_of(m);
   std::vector<std::vector<std::size_t>> faces = faces_of(m);
   if(!PMP::is_polygon_soup_a_polygon_mesh(faces)) PMP::orient_polygon_soup(points, faces);
-  Mesh sm;
+  Exact_mesh sm;
   PMP::polygon_soup_to_polygon_mesh(points, faces, sm);
   return sm;
 }
@@ -76,9 +76,9 @@ bool self_intersecting_faces(const Indexed_mesh& mesh, std::vector<std::pair<int
   pairs.clear();
   const std::vector<std::vector<std::size_t>> faces = faces_of(mesh);
   if(!PMP::is_polygon_soup_a_polygon_mesh(faces)) return false;
-  Mesh sm;
+  Exact_mesh sm;
   PMP::polygon_soup_to_polygon_mesh(points_of(mesh), faces, sm); // faces keep their order
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> found;
+  std::vector<std::pair<Exact_mesh::Face_index, Exact_mesh::Face_index>> found;
   PMP::self_intersections(sm, std::back_inserter(found));
   for(const auto& [f, g] : found) pairs.emplace_back(int(f), int(g));
   return true;
@@ -100,7 +100,7 @@ Surface_soundness check_surface(const Indexed_mesh& mesh, const Indexed_mesh* re
   }
   std::vector<std::pair<int, int>> pairs;
   s.self_intersections = self_intersecting_faces(mesh, pairs) ? static_cast<int>(pairs.size()) : -1;
-  const std::vector<Point_3> points = points_of(mesh);
+  const std::vector<Exact_point> points = points_of(mesh);
   for(const Triangle& t : mesh.triangles)
     s.degenerate_faces += CGAL::collinear(points[t[0]], points[t[1]], points[t[2]]);
   if(reference && reference->triangles == mesh.triangles)
@@ -156,14 +156,14 @@ namespace internal {
 
 struct Nearest_surface::Impl
 {
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Exact_mesh>;
   explicit Impl(const Indexed_mesh& surface)
     : target(surface_mesh_of(surface)), tree(faces(target).first, faces(target).second, target)
   {
     tree.accelerate_distance_queries();
   }
-  Mesh target;
-  CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree;
+  Exact_mesh target;
+  CGAL::AABB_tree<CGAL::AABB_traits<Exact_kernel, Primitive>> tree;
 };
 
 Nearest_surface::Nearest_surface(const Indexed_mesh& surface) : impl_(std::make_unique<Impl>(surface)) {}
@@ -172,16 +172,16 @@ Nearest_surface::~Nearest_surface() = default;
 
 Eigen::Vector3d Nearest_surface::closest_point(const Eigen::Vector3d& p) const
 {
-  const Point_3 q = impl_->tree.closest_point(Point_3(p[0], p[1], p[2]));
+  const Exact_point q = impl_->tree.closest_point(Exact_point(p[0], p[1], p[2]));
   return {q.x(), q.y(), q.z()};
 }
 
 bool Nearest_surface::folded(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) const
 {
   const Eigen::Vector3d centroid = (a + b + c) / 3.;
-  const Mesh::Face_index nearest =
-    impl_->tree.closest_point_and_primitive(Point_3(centroid[0], centroid[1], centroid[2])).second;
-  const Kernel::Vector_3 n = PMP::compute_face_normal(nearest, impl_->target);
+  const Exact_mesh::Face_index nearest =
+    impl_->tree.closest_point_and_primitive(Exact_point(centroid[0], centroid[1], centroid[2])).second;
+  const Exact_kernel::Vector_3 n = PMP::compute_face_normal(nearest, impl_->target);
   return (b - a).cross(c - a).dot(Eigen::Vector3d(n.x(), n.y(), n.z())) < 0.;
 }
 
@@ -218,7 +218,7 @@ std::vector<int> spike_faces(const Indexed_mesh& mesh, double angle, int sharp_e
 
 double relative_hausdorff_distance(const Indexed_mesh& a, const Indexed_mesh& b)
 {
-  const Mesh ma = surface_mesh_of(a), mb = surface_mesh_of(b);
+  const Exact_mesh ma = surface_mesh_of(a), mb = surface_mesh_of(b);
   const double diagonal = internal::bounding_box_diagonal(b.points);
   // A fixed seed: the sampling is otherwise seeded by the clock, and the
   // real-mesh table varied from run to run (0.29-0.33% on ant_97).

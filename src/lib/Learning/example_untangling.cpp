@@ -23,8 +23,8 @@ namespace {
 // Crossings are decided by exact predicates, as `self_intersecting_faces()`
 // decides them: with rounded ones, faces meeting at a shallow angle along an
 // edge are reported as crossing.
-using Mesh = internal::Exact_predicates_surface_mesh;
-using Face = Mesh::Face_index;
+using Exact_mesh = internal::Exact_predicates_surface_mesh;
+using Face = Exact_mesh::Face_index;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 // Per label, the input's faces of that label and of the labels it shares a
@@ -51,7 +51,7 @@ std::map<int, Nearest_surface> surfaces_around_labels(const Labeled_mesh& input)
 }
 
 // The pairs of faces of `mesh` that cross each other.
-std::vector<std::pair<int, int>> crossings_of(const Mesh& mesh)
+std::vector<std::pair<int, int>> crossings_of(const Exact_mesh& mesh)
 {
   std::vector<std::pair<Face, Face>> found;
   PMP::self_intersections(mesh, std::back_inserter(found));
@@ -66,7 +66,7 @@ std::vector<std::pair<int, int>> crossings_of(const Mesh& mesh)
 class Trial_mesh
 {
 public:
-  Trial_mesh(Mesh mesh, const Nearest_surface& folds) : mesh_(std::move(mesh)), folds_(folds) {}
+  Trial_mesh(Exact_mesh mesh, const Nearest_surface& folds) : mesh_(std::move(mesh)), folds_(folds) {}
 
   std::vector<std::pair<int, int>> crossing_pairs() const { return crossings_of(mesh_); }
 
@@ -83,12 +83,12 @@ public:
   // among those it touches without more crossings; returns whether it did.
   bool try_move(const std::vector<int>& moved, const Point_matrix& positions)
   {
-    std::vector<Mesh::Point> before;
-    for(int v : moved) before.push_back(mesh_.point(Mesh::Vertex_index(v)));
+    std::vector<Exact_mesh::Point> before;
+    for(int v : moved) before.push_back(mesh_.point(Exact_mesh::Vertex_index(v)));
     std::vector<Face> touched;
     for(int v : moved)
-      for(Face f : CGAL::faces_around_target(mesh_.halfedge(Mesh::Vertex_index(v)), mesh_))
-        if(f != Mesh::null_face()) touched.push_back(f);
+      for(Face f : CGAL::faces_around_target(mesh_.halfedge(Exact_mesh::Vertex_index(v)), mesh_))
+        if(f != Exact_mesh::null_face()) touched.push_back(f);
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     // The faces that can cross a touched face, before or after the move.
@@ -120,21 +120,21 @@ public:
 private:
   void set_points(const std::vector<int>& moved, const Point_matrix& positions)
   {
-    for(int v : moved) mesh_.point(Mesh::Vertex_index(v)) = Mesh::Point(positions(v, 0), positions(v, 1), positions(v, 2));
+    for(int v : moved) mesh_.point(Exact_mesh::Vertex_index(v)) = Exact_mesh::Point(positions(v, 0), positions(v, 1), positions(v, 2));
   }
 
-  void restore(const std::vector<int>& moved, const std::vector<Mesh::Point>& before)
+  void restore(const std::vector<int>& moved, const std::vector<Exact_mesh::Point>& before)
   {
-    for(std::size_t i = 0; i < moved.size(); ++i) mesh_.point(Mesh::Vertex_index(moved[i])) = before[i];
+    for(std::size_t i = 0; i < moved.size(); ++i) mesh_.point(Exact_mesh::Vertex_index(moved[i])) = before[i];
   }
 
   bool is_folded(Face f) const
   {
     Eigen::Vector3d corner[3];
     int k = 0;
-    for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_))
+    for(Exact_mesh::Vertex_index v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_))
     {
-      const Mesh::Point& p = mesh_.point(v);
+      const Exact_mesh::Point& p = mesh_.point(v);
       corner[k++] = Eigen::Vector3d(p.x(), p.y(), p.z());
     }
     return folds_.folded(corner[0], corner[1], corner[2]);
@@ -144,11 +144,11 @@ private:
   {
     CGAL::Bbox_3 box;
     for(Face f : faces)
-      for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_)) box += mesh_.point(v).bbox();
+      for(Exact_mesh::Vertex_index v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_)) box += mesh_.point(v).bbox();
     return box;
   }
 
-  Mesh mesh_;
+  Exact_mesh mesh_;
   const Nearest_surface& folds_;
 };
 
@@ -178,10 +178,10 @@ std::vector<int> vertices_around(const Indexed_mesh& mesh, std::initializer_list
 Point_matrix untangled_positions(const Indexed_mesh& mesh, const std::vector<int>& face_labels,
                                  const Labeled_mesh& input)
 {
-  Mesh example;
+  Exact_mesh example;
   try
   {
-    example = to_surface_mesh_of<Mesh::Point>(mesh, "learned example", "untangling");
+    example = to_surface_mesh_of<Exact_mesh::Point>(mesh, "learned example", "untangling");
   }
   catch(const Input_error&)
   {

@@ -22,6 +22,9 @@ namespace CGAL {
 namespace MPM {
 namespace internal {
 
+// What errors about a part graph name as their source.
+inline constexpr const char* part_graph_source = "part graph";
+
 // What a part cluster is attracted to: its target shape at zero coordinates
 // (in the frame of its type's shape space) and the deviations of its modes.
 struct Part_target
