@@ -66,7 +66,8 @@ void expect_indexed_cuts()
   const Cut_reference ref(to_indexed_mesh(g));
   // The reference is a real segmentation of the hand, not a trivial one.
   ASSERT_GE(ref.proposal.cutting.cuts.size(), 10u);
-  EXPECT_LT(rand_index_error(small_hand().mesh.mesh, ref.proposal.cutting.mesh.face_labels, small_hand().mesh.face_labels), 0.15);
+  const Labeled_mesh& hand = small_hand().mesh;
+  EXPECT_LT(rand_index_error(hand.mesh, ref.proposal.cutting.mesh.face_labels, hand.face_labels), 0.15);
 
   auto proposed = get(CGAL::dynamic_face_property_t<int>(), g);
   const Joint_proposal p = cut_at_proposed_joints(g, proposed);

@@ -98,7 +98,7 @@ void run_pipeline(double tolerance)
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using Point = typename boost::property_traits<typename CGAL::GetVertexPointMap<Mesh>::type>::value_type;
   const Pipeline_reference& ref = reference();
-  const double diagonal = (small_hand().mesh.mesh.points.colwise().maxCoeff() - small_hand().mesh.mesh.points.colwise().minCoeff()).norm();
+  const double diagonal = mpm_test::diagonal(small_hand().mesh.mesh.points);
 
   // Cut: labels land in a face property of the user's mesh.
   Mesh input;

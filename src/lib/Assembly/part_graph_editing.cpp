@@ -115,7 +115,8 @@ int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edg
   if(edge < 0 || edge >= int(graph.edges.size()))
     throw Input_error(part_graph_source, "edge " + std::to_string(edge),
                       "does not exist (the graph has " + std::to_string(graph.edges.size()) + " edges)");
-  if(type >= int(model.types.size())) throw Input_error(part_graph_source, "part type " + std::to_string(type), "does not exist");
+  if(type >= int(model.types.size()))
+    throw Input_error(part_graph_source, "part type " + std::to_string(type), "does not exist");
   const Part_edge old = graph.edges[edge];
   const int a = old.first, b = old.second;
   const Site_ref sa = model.rules[old.rule].first, sb = model.rules[old.rule].second;
@@ -161,7 +162,8 @@ int insert_segment(const Morphable_part_model& model, Part_graph& graph, int edg
       }
   }
   if(!why.empty())
-    throw Input_error(part_graph_source, "edge " + std::to_string(edge), "no inserted segment gives a valid graph: " + why);
+    throw Input_error(part_graph_source, "edge " + std::to_string(edge),
+                      "no inserted segment gives a valid graph: " + why);
   throw Input_error(part_graph_source, "edge " + std::to_string(edge),
                     "no part type docks to both " + site_text(model, sa) + " and " + site_text(model, sb) +
                       (type >= 0 ? " among type " + quoted(model.types[type].name) : std::string()));
@@ -206,7 +208,8 @@ std::vector<int> remove_segment(const Morphable_part_model& model, Part_graph& g
   const int p = e1.first == node ? e1.second : e1.first;
   const int q = e2.first == node ? e2.second : e2.first;
   if(p == q)
-    throw Input_error(part_graph_source, node_element(model, graph, node), "both its dockings lead to node " + std::to_string(p));
+    throw Input_error(part_graph_source, node_element(model, graph, node),
+                      "both its dockings lead to node " + std::to_string(p));
   const Site_ref sp = site_on_edge(model, e1, p), sq = site_on_edge(model, e2, q);
   const std::vector<int> rules = model.grammar().rules_between(sp, sq);
   if(rules.empty())
