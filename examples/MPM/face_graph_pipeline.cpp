@@ -73,7 +73,7 @@ void run(const std::string& name, const std::string& mesh_path, const MPM::Cut_s
   auto nodes = get(CGAL::dynamic_face_property_t<int>(), assembled);
   auto types = get(CGAL::dynamic_face_property_t<int>(), assembled);
   auto seams = get(CGAL::dynamic_vertex_property_t<int>(), assembled);
-  const MPM::Assembly assembly =
+  const MPM::Assembly_result assembly =
     MPM::assemble(model, MPM::part_graph_of_example(model), assembled, nodes, MPM::Assembly_options(),
                   MPM::parameters::face_part_type_map(types).vertex_is_seam_map(seams));
   std::vector<int> faces_of_type(model.types.size(), 0);

@@ -147,7 +147,7 @@ void run_pipeline(double tolerance)
   auto nodes = get(CGAL::dynamic_face_property_t<int>(), assembled);
   auto node_types = get(CGAL::dynamic_face_property_t<int>(), assembled);
   auto node_seams = get(CGAL::dynamic_vertex_property_t<int>(), assembled);
-  const Assembly a = assemble(model, part_graph_of_example(model), assembled, nodes, Assembly_options(),
+  const Assembly_result a = assemble(model, part_graph_of_example(model), assembled, nodes, Assembly_options(),
                               parameters::vertex_is_seam_map(node_seams).face_part_type_map(node_types));
   EXPECT_EQ(face_labels_from_map(assembled, nodes), ref.assembly.face_nodes);
   for(auto f : faces(assembled)) EXPECT_EQ(get(node_types, f), a.graph.nodes[std::size_t(get(nodes, f))].type);

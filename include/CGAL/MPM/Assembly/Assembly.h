@@ -34,22 +34,17 @@ struct Assembly_options
 };
 
 /// \ingroup PkgMPMRef
-/// An assembled and embedded part graph.
-struct Assembly
+/// What assembling and embedding a part graph did, without the mesh it
+/// made: what `assemble()` into the user's face graph returns, the mesh
+/// being that face graph.
+struct Assembly_result
 {
-  /// The input graph with `Part_node::vertices` (local -> vertex of `mesh`)
-  /// and the initial placements (`Part_node::motion`, `Part_edge::motion`) filled.
-  /// A node docked by a differently sampled seam (`Docking_rule::merged_seam`)
-  /// lists after its type's local vertices the seam vertices inserted into it.
+  /// The input graph with `Part_node::vertices` (local -> vertex of the
+  /// mesh, in the order the vertices were made) and the initial placements
+  /// (`Part_node::motion`, `Part_edge::motion`) filled. A node docked by a
+  /// differently sampled seam (`Docking_rule::merged_seam`) lists after its
+  /// type's local vertices the seam vertices inserted into it.
   Part_graph graph;
-  Indexed_mesh mesh;              ///< the embedded mesh (the initial one when not solved)
-  Point_matrix initial_positions; ///< the rigid placement, seam vertices averaged
-  std::vector<int> face_nodes;    ///< node of each face
-  std::vector<int> face_types;    ///< part type of each face
-  /// Per edge: the mesh vertex of each vertex of its rule's merged seam
-  /// (empty for seams sampled alike).
-  std::vector<std::vector<int>> seam_vertices;
-  Embedding_problem problem;      ///< what was solved (clusters: nodes, then edges)
   Solve_report report;            ///< what the solver did
   double residual_energy = 0.;    ///< energy of the embedding: the distortion the graph needs
   std::vector<double> part_energies;    ///< energy of each node's cluster
@@ -62,6 +57,20 @@ struct Assembly
   { return graph.nodes.empty() ? 0. : residual_energy / double(graph.nodes.size()); }
   /// The mesh vertex of local vertex `local` of node `node`.
   int vertex(int node, int local) const { return graph.nodes[node].vertices[local]; }
+};
+
+/// \ingroup PkgMPMRef
+/// An assembled and embedded part graph, with its mesh and what was solved.
+struct Assembly : Assembly_result
+{
+  Indexed_mesh mesh;              ///< the embedded mesh (the initial one when not solved)
+  Point_matrix initial_positions; ///< the rigid placement, seam vertices averaged
+  std::vector<int> face_nodes;    ///< node of each face
+  std::vector<int> face_types;    ///< part type of each face
+  /// Per edge: the mesh vertex of each vertex of its rule's merged seam
+  /// (empty for seams sampled alike).
+  std::vector<std::vector<int>> seam_vertices;
+  Embedding_problem problem;      ///< what was solved (clusters: nodes, then edges)
 };
 
 /// \ingroup PkgMPMRef

@@ -221,14 +221,16 @@ Edit_result caricature(const Morphable_part_model& model, double factor, FaceGra
 /// \ingroup PkgMPMRef
 /// Assembles and embeds `graph` (`assemble()`) into the empty `g` and
 /// writes the part graph node of each face into `face_nodes` (its part type
-/// is `graph.nodes[node].type`).
+/// is `graph.nodes[node].type`). Returns what the assembly did; the mesh is
+/// `g` (the indices in `Part_node::vertices` count the vertices of `g` in
+/// the order they were added).
 ///
 /// \tparam MutableFaceGraph a model of `MutableFaceGraph`
 /// \tparam FaceNodeMap a `WritablePropertyMap` from the face descriptor to `int`
 /// Named parameters: `vertex_point_map`, `face_part_type_map` and
 /// `vertex_is_seam_map` (the seams between nodes), as for `copy_training_example()`.
 template <class MutableFaceGraph, class FaceNodeMap, class NamedParameters = parameters::Default_named_parameters>
-Assembly assemble(const Morphable_part_model& model, const Part_graph& graph, MutableFaceGraph& g,
+Assembly_result assemble(const Morphable_part_model& model, const Part_graph& graph, MutableFaceGraph& g,
                   FaceNodeMap face_nodes, const Assembly_options& options = Assembly_options(),
                   const NamedParameters& np = parameters::default_values())
 {
@@ -236,7 +238,7 @@ Assembly assemble(const Morphable_part_model& model, const Part_graph& graph, Mu
   internal::write_part_maps(
     a.mesh, g, copy_to_face_graph(a.mesh, g, np), a.face_nodes, [&](std::size_t t) { return a.face_types[t]; },
     face_nodes, np);
-  return a;
+  return std::move(static_cast<Assembly_result&>(a));
 }
 
 } // namespace MPM
