@@ -59,6 +59,17 @@ struct Hole_frame
 
 } // namespace
 
+Limbed_model_spec limbed_model_spec(const std::string& body_name, int m, double ring_density)
+{
+  Limbed_model_spec spec;
+  spec.body_name = body_name;
+  spec.hole_cells = m;
+  spec.blend_cells = std::max(1, m / 6);
+  spec.corner_cells = std::max(1, m / 6);
+  spec.ring_density = ring_density;
+  return spec;
+}
+
 int limbed_model_vertex_count(const Limbed_model_spec& spec)
 {
   const long nx = spec.cells[0], ny = spec.cells[1], nz = spec.cells[2], m = spec.hole_cells;

@@ -2,7 +2,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/internal/Synthetic_builders.h>
 
-#include <algorithm>
 #include <cmath>
 
 namespace CGAL {
@@ -15,14 +14,8 @@ namespace {
 Limbed_model_spec spider_spec(int m, double density)
 {
   const double degree = std::acos(-1.) / 180.;
-  Limbed_model_spec spec;
-  spec.body_name = "body";
-  spec.hole_cells = m;
-  spec.blend_cells = std::max(1, m / 6);
-  spec.corner_cells = std::max(1, m / 6);
-  spec.ring_density = density;
-  const int border = spec.blend_cells + spec.corner_cells; // keeps rims and rounding apart
-  const int gap = 2 * spec.blend_cells;                    // keeps the rims' blends apart
+  Limbed_model_spec spec = limbed_model_spec("body", m, density);
+  const int border = spec.border(), gap = spec.gap();
   const int nz = 4 * m + 3 * gap + 2 * border, ny = m + 2 * border;
   const int nx = static_cast<int>(std::lround(0.7 * nz));
   spec.cells = Eigen::Vector3i(nx, ny, nz);

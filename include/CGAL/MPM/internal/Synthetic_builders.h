@@ -129,7 +129,16 @@ struct Limbed_model_spec
   std::vector<Limb_hole> holes;          ///< one limb per hole
   std::vector<Limb_segment_type> chain;  ///< segment types from the body outward
   double ring_density = 1.;              ///< scales the number of rings per segment
+
+  /// Cells that keep a rim off the rounding of the box's edges.
+  int border() const { return blend_cells + corner_cells; }
+  /// Cells that keep the blends of two neighbouring rims apart.
+  int gap() const { return 2 * blend_cells; }
 };
+
+/// A spec of `m` cells per hole side, its rims blended and the box's edges
+/// rounded over a sixth of that (at least one cell), with no holes yet.
+Limbed_model_spec limbed_model_spec(const std::string& body_name, int m, double ring_density);
 
 /// Vertex count of `make_limbed_model(spec, ...)` without building it.
 int limbed_model_vertex_count(const Limbed_model_spec& spec);
