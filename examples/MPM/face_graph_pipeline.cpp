@@ -48,7 +48,7 @@ void run(const std::string& name, const std::string& mesh_path, const MPM::Cut_s
 
   // Cut: one label per face, in a property map of the mesh.
   auto labels = get(CGAL::dynamic_face_property_t<int>(), mesh);
-  const MPM::Cutting_result cut = MPM::cut_mesh(mesh, cuts, labels);
+  const auto cut = MPM::cut_mesh(mesh, cuts, labels);
   const MPM::Morphable_part_model model = MPM::learn_morphable_part_model(mesh, labels, annotation);
 
   // Deform the learned example in place: its lowest vertex held, its highest lifted.

@@ -40,7 +40,7 @@ int main(int argc, char** argv)
 
     // Cut: one label per face, in the mesh's own property map.
     Mesh::Property_map<Mesh::Face_index, int> part = mesh.add_property_map<Mesh::Face_index, int>("f:part", -1).first;
-    const MPM::Joint_proposal joints = MPM::cut_at_proposed_joints(mesh, part);
+    const auto joints = MPM::cut_at_proposed_joints(mesh, part);
     std::cout << "cut at " << joints.cutting.cuts.size() << " proposed joints on " << joints.limbs << " limbs\n";
 
     // Part types from the segment graph: the fingers' segments share types.

@@ -69,34 +69,48 @@ void expect_indexed_cuts()
   const Labeled_mesh& hand = small_hand().mesh;
   EXPECT_LT(rand_index_error(hand.mesh, ref.proposal.cutting.mesh.face_labels, hand.face_labels), 0.15);
 
+  // The results name the vertices of g: vertex i of the indexed mesh is the
+  // i-th of vertices(g).
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  const std::vector<vertex_descriptor> vertex(vertices(g).begin(), vertices(g).end());
+  const auto named = [&](const std::vector<int>& indices) {
+    std::vector<vertex_descriptor> r;
+    for(int i : indices) r.push_back(vertex[std::size_t(i)]);
+    return r;
+  };
   auto proposed = get(CGAL::dynamic_face_property_t<int>(), g);
-  const Joint_proposal p = cut_at_proposed_joints(g, proposed);
+  const auto p = cut_at_proposed_joints(g, proposed);
   EXPECT_EQ(p.limbs, ref.proposal.limbs);
   ASSERT_EQ(p.joints.size(), ref.proposal.joints.size());
-  for(std::size_t j = 0; j < p.joints.size(); ++j) EXPECT_EQ(p.joints[j].vertex, ref.proposal.joints[j].vertex);
+  for(std::size_t j = 0; j < p.joints.size(); ++j)
+    EXPECT_EQ(p.joints[j].vertex, vertex[std::size_t(ref.proposal.joints[j].vertex)]);
+  ASSERT_EQ(p.cutting.cuts.size(), ref.proposal.cutting.cuts.size());
+  for(std::size_t k = 0; k < p.cutting.cuts.size(); ++k)
+    EXPECT_EQ(p.cutting.cuts[k].path, named(ref.proposal.cutting.cuts[k].path));
   EXPECT_EQ(face_labels_from_map(g, proposed), ref.proposal.cutting.mesh.face_labels);
 
-  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex(vertices(g).begin(), vertices(g).end());
-  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> clicks;
-  for(int v : ref.clicks) clicks.push_back(vertex[std::size_t(v)]);
+  const std::vector<vertex_descriptor> clicks = named(ref.clicks);
   auto clicked = get(CGAL::dynamic_face_property_t<int>(), g);
-  const Joint_cutting_result c = cut_at_vertices(g, clicks, clicked);
+  const auto c = cut_at_vertices(g, clicks, clicked);
   ASSERT_EQ(c.cuts.size(), ref.clicked.cuts.size());
-  for(std::size_t k = 0; k < c.cuts.size(); ++k) EXPECT_EQ(c.cuts[k].path, ref.clicked.cuts[k].path);
+  for(std::size_t k = 0; k < c.cuts.size(); ++k) {
+    EXPECT_EQ(c.cuts[k].vertex, clicks[k]);
+    EXPECT_EQ(c.cuts[k].path, named(ref.clicked.cuts[k].path));
+    EXPECT_EQ(c.cuts[k].length, ref.clicked.cuts[k].length);
+  }
   EXPECT_EQ(face_labels_from_map(g, clicked), ref.clicked.mesh.face_labels);
 
   // Click after click through one cutter (the skeleton computed once): the
   // clicks so far each give their cut, and all of them the cuts above.
   const Face_graph_joint_cutter<Mesh> cutter(g);
   auto step = get(CGAL::dynamic_face_property_t<int>(), g);
-  const std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> half(clicks.begin(),
-                                                                                 clicks.begin() + clicks.size() / 2);
+  const std::vector<vertex_descriptor> half(clicks.begin(), clicks.begin() + clicks.size() / 2);
   EXPECT_EQ(cutter.cut(half, step).cuts.size(), half.size());
   EXPECT_EQ(face_labels_from_map(g, step).size(), ref.clicked.mesh.face_labels.size());
   EXPECT_NE(face_labels_from_map(g, step), ref.clicked.mesh.face_labels);
-  const Joint_cutting_result all = cutter.cut(clicks, step);
+  const auto all = cutter.cut(clicks, step);
   ASSERT_EQ(all.cuts.size(), ref.clicked.cuts.size());
-  for(std::size_t k = 0; k < all.cuts.size(); ++k) EXPECT_EQ(all.cuts[k].path, ref.clicked.cuts[k].path);
+  for(std::size_t k = 0; k < all.cuts.size(); ++k) EXPECT_EQ(all.cuts[k].path, named(ref.clicked.cuts[k].path));
   EXPECT_EQ(face_labels_from_map(g, step), ref.clicked.mesh.face_labels);
 
   const Part_type_proposal types = propose_part_types(g, proposed);

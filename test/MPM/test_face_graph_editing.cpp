@@ -104,8 +104,17 @@ void run_pipeline(double tolerance)
   Mesh input;
   copy_to_face_graph(small_hand().mesh.mesh, input);
   auto labels = get(CGAL::dynamic_face_property_t<int>(), input);
-  cut_mesh(input, mpm_test::hand_cuts(small_hand()), labels);
+  const auto cut = cut_mesh(input, mpm_test::hand_cuts(small_hand()), labels);
   EXPECT_EQ(face_labels_from_map(input, labels), ref.cut.mesh.face_labels);
+  // The paths name the vertices of the user's mesh, in the order of vertices(input).
+  const std::vector<vertex_descriptor> input_vertex(vertices(input).begin(), vertices(input).end());
+  ASSERT_EQ(cut.paths.size(), ref.cut.paths.size());
+  for(std::size_t k = 0; k < cut.paths.size(); ++k) {
+    ASSERT_EQ(cut.paths[k].size(), ref.cut.paths[k].size());
+    for(std::size_t i = 0; i < cut.paths[k].size(); ++i)
+      EXPECT_EQ(cut.paths[k][i], input_vertex[std::size_t(ref.cut.paths[k][i])]);
+  }
+  EXPECT_EQ(cut.regions, ref.cut.regions);
 
   // Learn from the mesh and its label map.
   const Morphable_part_model model = learn_morphable_part_model(input, labels, small_hand().annotation);

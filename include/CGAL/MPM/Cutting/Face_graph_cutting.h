@@ -33,25 +33,64 @@ std::vector<int> click_indices(const VertexIndex& index, const VertexRange& clic
   return at;
 }
 
+// The vertices of `g` in the order of `vertices(g)`: vertex `i` of the
+// indexed mesh the cuts are found on is `vertex[i]`.
+template <class FaceGraph>
+std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor> vertex_list(const FaceGraph& g)
+{
+  // Parentheses: OpenMesh's iterators convert to its handles, so braces
+  // would make a list of the two ends.
+  return std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>(vertices(g).begin(),
+                                                                                 vertices(g).end());
+}
+
+template <class Vertex>
+std::vector<Vertex> named(const std::vector<int>& indices, const std::vector<Vertex>& vertex)
+{
+  std::vector<Vertex> r;
+  r.reserve(indices.size());
+  for(int i : indices) r.push_back(vertex[std::size_t(i)]);
+  return r;
+}
+
+// The cuts and skipped clicks of the indexed mesh, their vertices named by
+// the face graph's descriptors.
+template <class Vertex>
+Joint_cuts<Vertex> named(const Joint_cuts<int>& found, const std::vector<Vertex>& vertex)
+{
+  Joint_cuts<Vertex> r;
+  for(const Joint_cut& c : found.cuts)
+    r.cuts.push_back({vertex[std::size_t(c.vertex)], named(c.path, vertex), c.length, c.limb_radius, c.shift,
+                      c.centre, c.axis});
+  for(const Skipped_click& k : found.skipped) r.skipped.push_back({vertex[std::size_t(k.vertex)], k.reason});
+  return r;
+}
+
 } // namespace internal
 
 /// \ingroup PkgMPMRef
 /// Cuts the triangle mesh `g` along the cutting lines of `cuts` (vertex
 /// indices in the order of `vertices(g)`, see `vertex_order()`) and writes
 /// the label of each face into `face_labels`, as `cut_mesh()` labels the
-/// regions. Returns the cut's paths and lengths as `cut_mesh()` does.
+/// regions. Returns the cuts' paths, as vertex descriptors of `g`, and
+/// lengths as `cut_mesh()` does.
 ///
 /// \tparam FaceGraph a model of `FaceListGraph`
 /// \tparam FaceLabelMap a `WritablePropertyMap` from the face descriptor to `int`
 /// Named parameters: `vertex_point_map`.
 template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
-Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceLabelMap face_labels,
-                        const Cutting_options& options = Cutting_options(),
-                        const NamedParameters& np = parameters::default_values())
+Cut_paths<typename boost::graph_traits<FaceGraph>::vertex_descriptor>
+cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceLabelMap face_labels,
+         const Cutting_options& options = Cutting_options(), const NamedParameters& np = parameters::default_values())
 {
-  Cutting_result cut = cut_mesh(to_indexed_mesh(g, np), cuts, options, "face graph");
+  const Cutting_result cut = cut_mesh(to_indexed_mesh(g, np), cuts, options, "face graph");
   write_face_labels(cut.mesh.face_labels, g, face_labels);
-  return cut;
+  const auto vertex = internal::vertex_list(g);
+  Cut_paths<typename boost::graph_traits<FaceGraph>::vertex_descriptor> r;
+  for(const std::vector<int>& path : cut.paths) r.paths.push_back(internal::named(path, vertex));
+  r.lengths = cut.lengths;
+  r.regions = cut.regions;
+  return r;
 }
 
 /// \ingroup PkgMPMRef
@@ -59,8 +98,8 @@ Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceL
 /// around the limb through or next to each vertex of `clicks`, as
 /// `cut_at_vertices()` does, and writes the label of each face into
 /// `face_labels` (0 for the region of the first face, as `cut_mesh()`
-/// numbers regions). The result's vertex indices, in its cuts and its
-/// labelled mesh, are in the order of `vertices(g)` (`vertex_order()`).
+/// numbers regions). Returns the cuts and the clicks left out, their
+/// vertices as descriptors of `g`.
 ///
 /// \tparam FaceGraph a model of `FaceListGraph`
 /// \tparam VertexRange a range of vertex descriptors of `g`
@@ -71,14 +110,15 @@ Cutting_result cut_mesh(const FaceGraph& g, const Cut_specification& cuts, FaceL
 /// its index in `vertices(g)`.
 template <class FaceGraph, class VertexRange, class FaceLabelMap,
           class NamedParameters = parameters::Default_named_parameters>
-Joint_cutting_result cut_at_vertices(const FaceGraph& g, const VertexRange& clicks, FaceLabelMap face_labels,
-                                     const Joint_cutting_options& options = Joint_cutting_options(),
-                                     const NamedParameters& np = parameters::default_values())
+Joint_cuts<typename boost::graph_traits<FaceGraph>::vertex_descriptor>
+cut_at_vertices(const FaceGraph& g, const VertexRange& clicks, FaceLabelMap face_labels,
+                const Joint_cutting_options& options = Joint_cutting_options(),
+                const NamedParameters& np = parameters::default_values())
 {
-  Joint_cutting_result cut =
+  const Joint_cutting_result cut =
     cut_at_vertices(to_indexed_mesh(g, np), internal::click_indices(vertex_order(g), clicks), options, "face graph");
   write_face_labels(cut.mesh.face_labels, g, face_labels);
-  return cut;
+  return internal::named(cut, internal::vertex_list(g));
 }
 
 /// \ingroup PkgMPMRef
@@ -100,7 +140,8 @@ public:
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Face_graph_joint_cutter(const FaceGraph& g, const Joint_cutting_options& options = Joint_cutting_options(),
                                    const NamedParameters& np = parameters::default_values())
-    : g_(g), index_(vertex_order(g)), mesh_(to_indexed_mesh(g, np)), cutter_(mesh_, options, "face graph")
+    : g_(g), index_(vertex_order(g)), vertex_(internal::vertex_list(g)), mesh_(to_indexed_mesh(g, np)),
+      cutter_(mesh_, options, "face graph")
   {
   }
   // The cutter refers to the copy of the mesh it holds.
@@ -111,16 +152,18 @@ public:
   /// over a face graph gives them; writes the label of each face into
   /// `face_labels` (a `WritablePropertyMap` from the face descriptor to `int`).
   template <class VertexRange, class FaceLabelMap>
-  Joint_cutting_result cut(const VertexRange& clicks, FaceLabelMap face_labels) const
+  Joint_cuts<typename boost::graph_traits<FaceGraph>::vertex_descriptor> cut(const VertexRange& clicks,
+                                                                            FaceLabelMap face_labels) const
   {
-    Joint_cutting_result cut = cutter_.cut(internal::click_indices(index_, clicks));
+    const Joint_cutting_result cut = cutter_.cut(internal::click_indices(index_, clicks));
     write_face_labels(cut.mesh.face_labels, g_, face_labels);
-    return cut;
+    return internal::named(cut, vertex_);
   }
 
 private:
   const FaceGraph& g_;
   std::unordered_map<typename boost::graph_traits<FaceGraph>::vertex_descriptor, int> index_;
+  std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor> vertex_;
   Indexed_mesh mesh_;
   Joint_cutter cutter_;
 };
@@ -129,8 +172,8 @@ private:
 /// Joints proposed automatically on the user's mesh: cuts the closed
 /// triangle mesh `g` into a body and limb segments as
 /// `cut_at_proposed_joints()` does, with no click, and writes the label of
-/// each face into `face_labels`. The proposal's vertex indices are in the
-/// order of `vertices(g)` (`vertex_order()`). The labels are ready for
+/// each face into `face_labels`. The proposal's vertices are descriptors
+/// of `g`. The labels are ready for
 /// `propose_part_types()` and `learn_morphable_part_model()` over the same
 /// face graph: a raw mesh becomes a model with no file written by hand.
 ///
@@ -140,13 +183,22 @@ private:
 ///
 /// Throws `Input_error` as `cut_at_proposed_joints()` does.
 template <class FaceGraph, class FaceLabelMap, class NamedParameters = parameters::Default_named_parameters>
-Joint_proposal cut_at_proposed_joints(const FaceGraph& g, FaceLabelMap face_labels,
-                                      const Joint_proposal_options& options = Joint_proposal_options(),
-                                      const NamedParameters& np = parameters::default_values())
+Basic_joint_proposal<typename boost::graph_traits<FaceGraph>::vertex_descriptor,
+                     Joint_cuts<typename boost::graph_traits<FaceGraph>::vertex_descriptor>>
+cut_at_proposed_joints(const FaceGraph& g, FaceLabelMap face_labels,
+                       const Joint_proposal_options& options = Joint_proposal_options(),
+                       const NamedParameters& np = parameters::default_values())
 {
-  Joint_proposal proposal = cut_at_proposed_joints(to_indexed_mesh(g, np), options, "face graph");
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  const Joint_proposal proposal = cut_at_proposed_joints(to_indexed_mesh(g, np), options, "face graph");
   write_face_labels(proposal.cutting.mesh.face_labels, g, face_labels);
-  return proposal;
+  const std::vector<vertex_descriptor> vertex = internal::vertex_list(g);
+  Basic_joint_proposal<vertex_descriptor, Joint_cuts<vertex_descriptor>> r;
+  for(const Proposed_joint& j : proposal.joints)
+    r.joints.push_back({vertex[std::size_t(j.vertex)], j.limb, j.at_base, j.strength, j.by_analogy});
+  r.limbs = proposal.limbs;
+  r.cutting = internal::named(proposal.cutting, vertex);
+  return r;
 }
 
 } // namespace MPM

@@ -49,18 +49,26 @@ struct Joint_cutting_options
 
 /// \ingroup PkgMPMRef
 /// A clicked vertex left out by `Joint_cutting_options::skip_unfound`.
-struct Skipped_click
+/// `Vertex` names a vertex: its index in the indexed mesh (`Skipped_click`)
+/// or its descriptor in the user's face graph (`Face_graph_cutting.h`).
+template <class Vertex>
+struct Basic_skipped_click
 {
-  int vertex = -1;    ///< the clicked vertex
+  Vertex vertex{};    ///< the clicked vertex
   std::string reason; ///< the message the error would have had
 };
 
 /// \ingroup PkgMPMRef
-/// One cut found from one clicked vertex.
-struct Joint_cut
+/// A click left out, on the indexed mesh.
+using Skipped_click = Basic_skipped_click<int>;
+
+/// \ingroup PkgMPMRef
+/// One cut found from one clicked vertex; `Vertex` as for `Basic_skipped_click`.
+template <class Vertex>
+struct Basic_joint_cut
 {
-  int vertex = -1;              ///< the clicked vertex
-  std::vector<int> path;        ///< closed vertex path of the cut (ends with its first vertex)
+  Vertex vertex{};              ///< the clicked vertex
+  std::vector<Vertex> path;     ///< closed vertex path of the cut (ends with its first vertex)
   double length = 0.;           ///< Euclidean length of `path`
   double limb_radius = 0.;      ///< mean distance of the limb's surface from its axis there
   double shift = 0.; ///< how far the chosen section moved along the limb (see `Joint_cutting_options::search_range`)
@@ -69,12 +77,25 @@ struct Joint_cut
 };
 
 /// \ingroup PkgMPMRef
-/// The mesh labelled by the cuts, and the cuts.
-struct Joint_cutting_result
+/// A cut found on the indexed mesh.
+using Joint_cut = Basic_joint_cut<int>;
+
+/// \ingroup PkgMPMRef
+/// The cuts found at clicked vertices and the clicks left out; what cutting
+/// the user's face graph returns, the labels being in its face label map.
+template <class Vertex>
+struct Joint_cuts
 {
-  Labeled_mesh mesh;          ///< input geometry, one label per face (regions numbered by their first face)
-  std::vector<Joint_cut> cuts; ///< one per clicked vertex found, in the given order
-  std::vector<Skipped_click> skipped; ///< clicks left out (only with `Joint_cutting_options::skip_unfound`)
+  std::vector<Basic_joint_cut<Vertex>> cuts; ///< one per clicked vertex found, in the given order
+  /// Clicks left out (only with `Joint_cutting_options::skip_unfound`).
+  std::vector<Basic_skipped_click<Vertex>> skipped;
+};
+
+/// \ingroup PkgMPMRef
+/// The cuts on the indexed mesh, and the mesh labelled by them.
+struct Joint_cutting_result : Joint_cuts<int>
+{
+  Labeled_mesh mesh; ///< input geometry, one label per face (regions numbered by their first face)
 };
 
 /// \ingroup PkgMPMRef

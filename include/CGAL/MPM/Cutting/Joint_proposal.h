@@ -32,10 +32,12 @@ struct Joint_proposal_options
 };
 
 /// \ingroup PkgMPMRef
-/// One joint proposed by `cut_at_proposed_joints()`.
-struct Proposed_joint
+/// One joint proposed by `cut_at_proposed_joints()`; `Vertex` as for
+/// `Basic_skipped_click`.
+template <class Vertex>
+struct Basic_proposed_joint
 {
-  int vertex = -1;       ///< the vertex clicked for it
+  Vertex vertex{};       ///< the vertex clicked for it
   int limb = -1;         ///< the limb it is on (0, 1, ...), or -1 for the body's own axis
   bool at_base = false;  ///< where the limb leaves the body
   double strength = 0.;  ///< how clearly it shows, narrowing and bend together (1: just at the sensitivity's threshold; 0 at a base)
@@ -43,13 +45,24 @@ struct Proposed_joint
 };
 
 /// \ingroup PkgMPMRef
-/// The proposed joints and the mesh cut at them.
-struct Joint_proposal
+/// A joint proposed on the indexed mesh.
+using Proposed_joint = Basic_proposed_joint<int>;
+
+/// \ingroup PkgMPMRef
+/// The proposed joints and the cuts at them: `Cutting` is a
+/// `Joint_cutting_result` on the indexed mesh (`Joint_proposal`), the
+/// `Joint_cuts` of the vertex descriptors on the user's face graph.
+template <class Vertex, class Cutting>
+struct Basic_joint_proposal
 {
-  std::vector<Proposed_joint> joints; ///< proposed joints, limb by limb from the body outwards
-  int limbs = 0;                      ///< limbs found
-  Joint_cutting_result cutting;       ///< `cut_at_vertices()` at the proposed joints' vertices
+  std::vector<Basic_proposed_joint<Vertex>> joints; ///< proposed joints, limb by limb from the body outwards
+  int limbs = 0;                                    ///< limbs found
+  Cutting cutting; ///< `cut_at_vertices()` at the proposed joints' vertices
 };
+
+/// \ingroup PkgMPMRef
+/// The proposed joints and the indexed mesh cut at them.
+using Joint_proposal = Basic_joint_proposal<int, Joint_cutting_result>;
 
 /// \ingroup PkgMPMRef
 /// Joints proposed automatically: cuts a closed, connected mesh into a body

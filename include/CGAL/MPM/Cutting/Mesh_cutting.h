@@ -56,20 +56,29 @@ struct Cutting_options
 };
 
 /// \ingroup PkgMPMRef
-/// The cut mesh.
-struct Cutting_result
+/// The cuts' paths; what `cut_mesh()` over the user's face graph returns,
+/// the labels being in its face label map. `Vertex` names a vertex: its
+/// index in the indexed mesh, its descriptor in the face graph.
+template <class Vertex>
+struct Cut_paths
+{
+  /// Vertex path of each cut, in the order of `Cut_specification::cuts`;
+  /// a closed cut ends with its first vertex again.
+  std::vector<std::vector<Vertex>> paths;
+  /// Euclidean length of each path.
+  std::vector<double> lengths;
+  /// Number of face-connected regions (equal to the number of labels).
+  int regions = 0;
+};
+
+/// \ingroup PkgMPMRef
+/// The cut indexed mesh and the cuts' paths.
+struct Cutting_result : Cut_paths<int>
 {
   /// The input geometry, unchanged, with one label per face: a region named
   /// by a `Part_seed` gets its label; the others, in order of their lowest
   /// face index, get the smallest non-negative labels not used by a seed.
   Labeled_mesh mesh;
-  /// Vertex path of each cut, in the order of `Cut_specification::cuts`;
-  /// a closed cut ends with its first vertex again.
-  std::vector<std::vector<int>> paths;
-  /// Euclidean length of each path.
-  std::vector<double> lengths;
-  /// Number of face-connected regions (equal to the number of labels).
-  int regions = 0;
 };
 
 /// \ingroup PkgMPMRef
