@@ -33,17 +33,6 @@ std::vector<int> click_indices(const VertexIndex& index, const VertexRange& clic
   return at;
 }
 
-// The vertices of `g` in the order of `vertices(g)`: vertex `i` of the
-// indexed mesh the cuts are found on is `vertex[i]`.
-template <class FaceGraph>
-std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor> vertex_list(const FaceGraph& g)
-{
-  // Parentheses: OpenMesh's iterators convert to its handles, so braces
-  // would make a list of the two ends.
-  return std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>(vertices(g).begin(),
-                                                                                 vertices(g).end());
-}
-
 template <class Vertex>
 std::vector<Vertex> named(const std::vector<int>& indices, const std::vector<Vertex>& vertex)
 {

@@ -38,6 +38,21 @@ std::unordered_map<typename boost::graph_traits<FaceGraph>::vertex_descriptor, i
   return index;
 }
 
+namespace internal {
+
+// The inverse of `vertex_order()`: vertex `i` of `to_indexed_mesh(g)` is
+// the `i`-th of the result.
+template <class FaceGraph>
+std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor> vertex_list(const FaceGraph& g)
+{
+  // Parentheses: OpenMesh's iterators convert to its handles, so braces
+  // would make a list of the two ends.
+  return std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>(vertices(g).begin(),
+                                                                                 vertices(g).end());
+}
+
+} // namespace internal
+
 /// \ingroup PkgMPMRef
 /// Converts a triangle mesh given as a model of `FaceGraph` to the plain
 /// `Indexed_mesh` the learning and solving code works on.
