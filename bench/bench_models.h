@@ -223,7 +223,7 @@ inline const CGAL::MPM::Labeled_mesh& bench_mesh(Bench_model which)
   auto found = cache.find(which);
   if(found == cache.end()) {
     const CGAL::MPM::Training_example& example = learned_model(which).examples.front();
-    found = cache.emplace(which, CGAL::MPM::Labeled_mesh{example.mesh, example.face_labels, example.name}).first;
+    found = cache.emplace(which, CGAL::MPM::to_labeled_mesh(example)).first;
   }
   return found->second;
 }

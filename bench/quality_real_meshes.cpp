@@ -103,13 +103,14 @@ Edit_result evaluate(const Morphable_part_model& model, const Embedding_problem&
   r.converged = report.converged;
   r.iterations = report.iterations;
   Indexed_mesh after = problem.mesh;
+  const std::vector<int> labels = to_labeled_mesh(model.examples.front()).face_labels;
   r.inverted_before_unfolding =
     static_cast<int>(inverted_faces(Indexed_mesh{solver.positions(), problem.mesh.triangles}, problem.mesh,
-                                    &model.examples.front().face_labels).size());
+                                    &labels).size());
   // What the user gets, as `mpm` writes it: the folds taken out.
   after.points = unfold_faces(problem.mesh, solver.positions(), held);
-  r.soundness = check_surface(after, &problem.mesh, &model.examples.front().face_labels);
-  for(int f : inverted_faces(after, problem.mesh, &model.examples.front().face_labels))
+  r.soundness = check_surface(after, &problem.mesh, &labels);
+  for(int f : inverted_faces(after, problem.mesh, &labels))
     ++(std::binary_search(folded_at_rest.begin(), folded_at_rest.end(), f) ? r.unfolded : r.new_inverted);
   for(int f : locally_inverted_faces(after, problem.mesh))
     r.new_folds += !std::binary_search(folded_at_rest.begin(), folded_at_rest.end(), f);
@@ -280,11 +281,11 @@ int main(int argc, char** argv)
       const auto start = std::chrono::steady_clock::now();
       const Morphable_part_model model = learn_morphable_part_model({input});
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const Training_example& ex = model.examples.front();
+      const Indexed_mesh learned = to_labeled_mesh(model.examples.front()).mesh;
       const Surface_soundness input_soundness = check_surface(input.mesh.mesh);
-      const Surface_soundness rest = check_surface(ex.mesh);
-      const std::vector<int> folded = folded_faces(ex.mesh, input.mesh.mesh),
-                             spikes = spike_faces(ex.mesh, CGAL_PI / 3., 2);
+      const Surface_soundness rest = check_surface(learned);
+      const std::vector<int> folded = folded_faces(learned, input.mesh.mesh),
+                             spikes = spike_faces(learned, CGAL_PI / 3., 2);
       std::vector<int> rest_faults;
       std::set_union(folded.begin(), folded.end(), spikes.begin(), spikes.end(), std::back_inserter(rest_faults));
       int corresponded = 0;
@@ -295,7 +296,7 @@ int main(int argc, char** argv)
            << seconds << " | " << rest.components << " | "
            << rest.border_edges << " | " << folded.size() << " | "
            << std::max(0, rest.self_intersections - std::max(0, input_soundness.self_intersections)) << " | "
-           << std::setprecision(2) << 100. * relative_hausdorff_distance(ex.mesh, input.mesh.mesh) << " | "
+           << std::setprecision(2) << 100. * relative_hausdorff_distance(learned, input.mesh.mesh) << " | "
            << inserted.closed << " / " << inserted.tried << " (" << std::setprecision(2)
            << inserted.worst_energy_per_part << ") | " << inserted.crossings << " | ";
       if(!inserted.failure.empty()) std::cerr << name << ": an insertion failed: " << inserted.failure << "\n";

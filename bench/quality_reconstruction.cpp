@@ -67,7 +67,7 @@ int main(int argc, char** argv)
     so.vertices = options.integer("vertices");
     const Synthetic_model truth = make_synthetic_model(family, so);
     const Morphable_part_model model = learn_morphable_part_model(truth.mesh, truth.annotation);
-    const Indexed_mesh& mesh = model.examples[0].mesh;
+    const Indexed_mesh mesh = to_labeled_mesh(model.examples[0]).mesh;
     const Eigen::SparseMatrix<double> laplacian = cotangent_laplacian(mesh);
     const std::string name = family_name(family);
     std::cerr << name << ": " << mesh.number_of_vertices() << " vertices\n";

@@ -83,6 +83,7 @@ int main(int argc, char** argv)
     const Synthetic_model truth = make_synthetic_model(family, so);
     const Morphable_part_model model = learn_morphable_part_model(truth.mesh, truth.annotation);
     const Training_example& example = model.examples[0];
+    const Point_matrix rest = rest_positions(example);
     const std::string name = family_name(family);
     std::cerr << name << ": " << model.types.size() << " part types\n";
 
@@ -94,7 +95,7 @@ int main(int argc, char** argv)
         if(node.type == static_cast<int>(t))
         {
           Point_matrix p(Eigen::Index(node.vertices.size()), 3);
-          for(std::size_t i = 0; i < node.vertices.size(); ++i) p.row(Eigen::Index(i)) = example.mesh.points.row(node.vertices[i]);
+          for(std::size_t i = 0; i < node.vertices.size(); ++i) p.row(Eigen::Index(i)) = rest.row(node.vertices[i]);
           instances.push_back(std::move(p));
         }
       const int m = static_cast<int>(instances.size());

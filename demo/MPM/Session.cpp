@@ -232,15 +232,16 @@ void Session::rebuild()
     case Edit_mode::caricature: problem = MPM::make_caricature_problem(model_, caricature_factor_, 0); break;
     }
     const MPM::Training_example& example = model_.examples.front();
+    const MPM::Labeled_mesh rest = MPM::to_labeled_mesh(example);
     std::map<int, int> node_of_label;
     for(std::size_t n = 0; n < example.graph.nodes.size(); ++n) node_of_label[example.graph.nodes[n].label] = int(n);
-    std::vector<int> face_nodes(example.face_labels.size(), -1);
+    std::vector<int> face_nodes(rest.face_labels.size(), -1);
     for(std::size_t f = 0; f < face_nodes.size(); ++f)
     {
-      const auto it = node_of_label.find(example.face_labels[f]);
+      const auto it = node_of_label.find(rest.face_labels[f]);
       if(it != node_of_label.end()) face_nodes[f] = it->second;
     }
-    set_scene(example.mesh, example.graph, std::move(face_nodes));
+    set_scene(rest.mesh, example.graph, std::move(face_nodes));
   }
   else
   {

@@ -118,8 +118,9 @@ public:
     : options_(to_solver_options(kwargs))
   {
     Embedding_problem problem = make_problem(model, example, edit, factor, relative_sigma);
-    rest_ = model.examples[example].mesh;
-    labels_ = model.examples[example].face_labels;
+    Labeled_mesh rest = to_labeled_mesh(model.examples[example]);
+    rest_ = std::move(rest.mesh);
+    labels_ = std::move(rest.face_labels);
     options_.iteration_callback = [this](int iteration, double energy) {
       if(!per_iteration_) return;
       per_iteration_(iteration, energy);
@@ -352,9 +353,8 @@ void bind_editing(py::module_& m)
   m.def("handles_per_part", [](const Morphable_part_model& model, int per_part, int example, const py::handle& targets) {
     if(example < 0 || example >= int(model.examples.size()))
       throw py::value_error("example: " + std::to_string(example) + " does not exist");
-    const Training_example& e = model.examples[example];
-    Labeled_mesh mesh{e.mesh, e.face_labels, e.name};
-    const Point_matrix source = targets.is_none() ? e.mesh.points : to_points(targets, "targets");
+    const Labeled_mesh mesh = to_labeled_mesh(model.examples[example]);
+    const Point_matrix source = targets.is_none() ? mesh.mesh.points : to_points(targets, "targets");
     Handle_set h = handles_per_part(mesh, per_part, source);
     return py::make_tuple(int_array(std::move(h.vertices)), points_array(std::move(h.targets))); },
         py::arg("model"), py::arg("per_part") = 1, py::arg("example") = 0, py::arg("targets") = py::none(),

@@ -165,10 +165,12 @@ their pair geometry (the grammar), and the training examples. Made by
                        "seam (k x 2 local vertex pairs), and the pair geometry's shape space.")
     .def_property_readonly("examples", [](const Morphable_part_model& model) {
       py::list examples;
-      for(const Training_example& e : model.examples)
-        examples.append(py::dict(py::arg("name") = e.name, py::arg("V") = points_array(Point_matrix(e.mesh.points)),
-                                 py::arg("F") = triangles_array(std::vector<Triangle>(e.mesh.triangles)),
-                                 py::arg("labels") = int_array(std::vector<int>(e.face_labels))));
+      for(const Training_example& e : model.examples) {
+        Labeled_mesh rest = to_labeled_mesh(e);
+        examples.append(py::dict(py::arg("name") = e.name, py::arg("V") = points_array(std::move(rest.mesh.points)),
+                                 py::arg("F") = triangles_array(std::move(rest.mesh.triangles)),
+                                 py::arg("labels") = int_array(std::move(rest.face_labels))));
+      }
       return examples; }, "Training examples, one dict each: name, V, F, labels (the mesh the edits start from).")
     .def_property_readonly("parameters", [](const Morphable_part_model& model) { return parameters_dict(model.parameters); },
                            "Model parameters (sigma_sub, sigma_bound, docking_radius, modes, explained_variance).")

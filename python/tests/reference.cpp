@@ -54,9 +54,7 @@ Json hand(int vertices, unsigned pose_seed)
   for(const Part_type& t : model.types)
     types.push_back({{"name", t.name}, {"sigmas", entries(t.space.sigmas)}, {"modes", entries(t.space.modes)},
                      {"mean", entries(t.space.mean)}});
-  const Training_example& example = model.examples[0];
-  const Handle_set handles = handles_per_part(Labeled_mesh{example.mesh, example.face_labels, example.name}, 1,
-                                              synthetic.draw_pose(pose_seed));
+  const Handle_set handles = handles_per_part(to_labeled_mesh(model.examples[0]), 1, synthetic.draw_pose(pose_seed));
   // As `cgal_mpm.Editor` does: factored when built, then the handles.
   Embedding_solver solver(make_deformation_problem(model, 0));
   solver.preprocess();
@@ -73,9 +71,8 @@ Json drag(int vertices, int drags)
 {
   Synthetic_model synthetic;
   const Morphable_part_model model = learned_hand(vertices, synthetic);
-  const Training_example& example = model.examples[0];
-  const Handle_set handles =
-    handles_per_part(Labeled_mesh{example.mesh, example.face_labels, example.name}, 1, example.mesh.points);
+  const Labeled_mesh example = to_labeled_mesh(model.examples[0]);
+  const Handle_set handles = handles_per_part(example, 1, example.mesh.points);
   Embedding_solver solver(make_deformation_problem(model, 0));
   solver.preprocess();
   solver.set_handles(handles.vertices, handles.targets);

@@ -22,7 +22,7 @@ class Mpm_method final : public Deformation_method
 {
 public:
   Mpm_method(const Morphable_part_model& model, int example, const Embedding_options& options)
-    : solver_(make_deformation_problem(model, example), options), n_(model.examples[std::size_t(example)].mesh.number_of_vertices())
+    : solver_(make_deformation_problem(model, example), options), n_(static_cast<int>(model.examples[std::size_t(example)].mesh.number_of_vertices()))
   {}
   std::string name() const override { return "mpm"; }
   void set_handles(const Handle_set& handles) override
@@ -182,7 +182,7 @@ std::unique_ptr<Deformation_method> make_deformation_method(const std::string& n
   if(example < 0 || example >= static_cast<int>(model.examples.size()))
     throw Input_error("model", "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
-  const Indexed_mesh& mesh = model.examples[std::size_t(example)].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(model.examples[std::size_t(example)]).mesh;
   if(name == "mpm")
   {
     Embedding_options mpm = options.mpm;

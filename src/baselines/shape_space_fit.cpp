@@ -83,7 +83,7 @@ Shape_space_fit::Shape_space_fit(const Morphable_part_model& model, int example)
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   const Training_example& ex = model.examples[std::size_t(example)];
   Impl& d = *impl_;
-  d.rest = ex.mesh.points;
+  d.rest = rest_positions(ex);
   const double sigma_sub = model.parameters.sigma_sub;
   d.data_weight = sigma_sub > 0 && std::isfinite(sigma_sub) ? 1. / (sigma_sub * sigma_sub) : 1.;
   d.parts_of_vertex.resize(std::size_t(d.rest.rows()));

@@ -68,7 +68,7 @@ int run_compare(const Args& args, Context& context)
     throw Input_error(model_path, "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " example" +
                         (model.examples.size() == 1 ? "" : "s") + ")");
-  const Indexed_mesh& mesh = model.examples[std::size_t(example)].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(model.examples[std::size_t(example)]).mesh;
   const std::string handles_file = args.text("handles");
   const Handle_set handles = read_handles(handles_file, mesh.points);
 

@@ -38,21 +38,20 @@ int run_handles(const Args& args, Context& context)
   if(example >= static_cast<int>(model.examples.size()))
     throw Input_error(model_path, "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
-  const Training_example rest = model.examples[example];
+  const Labeled_mesh rest = to_labeled_mesh(model.examples[example]);
   Point_matrix targets = rest.mesh.points;
   const std::string targets_file = args.text("targets");
   if(!targets_file.empty())
   {
     // The same checks as for any other pose of the example.
     set_example_pose(model, example, read_mesh_file(targets_file).mesh, targets_file);
-    targets = model.examples[example].mesh.points;
+    targets = rest_positions(model.examples[example]);
   }
 
   Handle_set handles;
   if(args.has("per-part"))
   {
-    Labeled_mesh labeled{rest.mesh, rest.face_labels, rest.name};
-    handles = handles_per_part(labeled, static_cast<int>(args.integer("per-part", 1)), targets);
+    handles = handles_per_part(rest, static_cast<int>(args.integer("per-part", 1)), targets);
   }
   else if(args.has("farthest"))
     handles = farthest_point_handles(rest.mesh, static_cast<int>(args.integer("farthest", 1)), targets);

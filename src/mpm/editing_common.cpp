@@ -32,12 +32,14 @@ Color_matrix part_type_colors(const CGAL::MPM::Training_example& example)
   std::map<int, int> type_of_label;
   for(const CGAL::MPM::Part_node& node : example.graph.nodes) type_of_label[node.label] = node.type;
   Color_matrix colors(example.mesh.number_of_faces(), 3);
-  for(int f = 0; f < colors.rows(); ++f)
+  const auto labels = example.face_labels();
+  Eigen::Index row = 0;
+  for(const CGAL::MPM::Example_mesh::Face_index f : example.mesh.faces())
   {
     // A face whose label is no part of the example's graph gets the colour of no known type.
-    const auto it = type_of_label.find(example.face_labels[f]);
+    const auto it = type_of_label.find(labels[f]);
     const CGAL::MPM::Rgb_color c = CGAL::MPM::part_type_color(it == type_of_label.end() ? -1 : it->second);
-    colors.row(f) << c[0], c[1], c[2];
+    colors.row(row++) << c[0], c[1], c[2];
   }
   return colors;
 }
@@ -118,8 +120,9 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
   const std::string pose_file = args.text("mesh");
   if(!pose_file.empty()) set_example_pose(model, example, read_mesh_file(pose_file).mesh, pose_file);
   const Training_example& input = model.examples[example];
+  const Point_matrix rest = rest_positions(input);
   const std::string handles_file = args.text("handles");
-  const Handle_set handles = handles_file.empty() ? Handle_set() : read_handles(handles_file, input.mesh.points);
+  const Handle_set handles = handles_file.empty() ? Handle_set() : read_handles(handles_file, rest);
 
   Edit_options edit;
   Embedding_options& options = edit.solver;
@@ -171,7 +174,7 @@ int run_editing(const Editing_command& editing, const std::vector<Option_spec>& 
     {"inverted_faces_solved", r.inverted_faces_solved},
     {"inverted_faces_written", r.inverted_faces_written},
     {"unfold_ms", r.unfold_ms},
-    {"rms_displacement", relative_rms_displacement(input.mesh.points, edited.points)},
+    {"rms_displacement", relative_rms_displacement(rest, edited.points)},
     {"output", output},
   };
   if(context.json) print_json(summary);

@@ -69,6 +69,7 @@ void expect_seams_shared(const Morphable_part_model& m, const Assembly& a)
 double reproduction_error(const Morphable_part_model& m, const Assembly& a, int example = 0)
 {
   const Training_example& ex = m.examples[example];
+  const Labeled_mesh labeled = to_labeled_mesh(ex);
   std::vector<int> assembled, original;
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
     for(std::size_t l = 0; l < ex.graph.nodes[i].vertices.size(); ++l)
@@ -80,7 +81,7 @@ double reproduction_error(const Morphable_part_model& m, const Assembly& a, int 
   for(std::size_t k = 0; k < assembled.size(); ++k)
   {
     p.row(k) = a.mesh.points.row(assembled[k]);
-    q.row(k) = ex.mesh.points.row(original[k]);
+    q.row(k) = labeled.mesh.points.row(original[k]);
   }
   const Point_matrix aligned = fit_rigid_motion(p, q).apply(p);
   return (aligned - q).rowwise().norm().maxCoeff() / diagonal(q);
@@ -151,7 +152,7 @@ TEST_P(Reproduction, training_graph_gives_the_training_mesh)
   const Assembly a = assemble(m, part_graph_of_example(m), training_assembly_options(m));
   EXPECT_EQ(a.mesh.number_of_vertices(), m.examples[0].mesh.number_of_vertices());
   EXPECT_EQ(a.mesh.number_of_faces(), m.examples[0].mesh.number_of_faces());
-  EXPECT_EQ(border_edges(a.mesh.triangles), border_edges(m.examples[0].mesh.triangles));
+  EXPECT_EQ(border_edges(a.mesh.triangles), border_edges(to_labeled_mesh(m.examples[0]).mesh.triangles));
   expect_seams_shared(m, a);
   const double error = reproduction_error(m, a);
   std::cout << "[ assembly ] " << family_name(GetParam()) << " reproduction error " << error << ", residual energy "
@@ -185,7 +186,7 @@ TEST(Assembly, placement_on_seams_reproduces_the_training_mesh)
 TEST(Assembly, hand_with_an_inserted_finger_segment)
 {
   const Morphable_part_model& m = model_with_repetitions(Synthetic_family::hand);
-  EXPECT_EQ(border_edges(m.examples[0].mesh.triangles), 0);
+  EXPECT_EQ(border_edges(to_labeled_mesh(m.examples[0]).mesh.triangles), 0);
   const double train = check_edited(m, part_graph_of_example(m), "hand training graph");
   EXPECT_NEAR(train, 1., 1e-12);
   Part_graph g = part_graph_of_example(m);

@@ -51,7 +51,7 @@ class Baselines_on_family : public ::testing::TestWithParam<Synthetic_family>
 TEST_P(Baselines_on_family, zero_displacement_returns_the_input)
 {
   const Learned& l = learned(GetParam());
-  const Indexed_mesh& mesh = l.model.examples[0].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(l.model.examples[0]).mesh;
   const double d = diagonal(mesh.points);
   Handle_set handles = farthest_point_handles(mesh, 8, mesh.points);
   const Handle_set per_part = handles_per_part(l.truth.mesh, 1, mesh.points);
@@ -77,7 +77,7 @@ TEST_P(Baselines_on_family, zero_displacement_returns_the_input)
 TEST_P(Baselines_on_family, every_method_is_finite_on_a_held_out_pose)
 {
   const Learned& l = learned(GetParam());
-  const Indexed_mesh& mesh = l.model.examples[0].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(l.model.examples[0]).mesh;
   const Point_matrix pose = l.truth.draw_pose(7);
   const double d = diagonal(pose);
   for(int count : {2, 16})
@@ -121,7 +121,7 @@ Point_matrix rigidly_moved(const Point_matrix& p)
 TEST(Thin_plate_spline, rigid_motion_of_the_handles_is_reproduced_exactly)
 {
   const Learned& l = learned(Synthetic_family::hand);
-  const Indexed_mesh& mesh = l.model.examples[0].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(l.model.examples[0]).mesh;
   const Point_matrix moved = rigidly_moved(mesh.points);
   auto tps = make_deformation_method("tps", l.model);
   tps->set_handles(farthest_point_handles(mesh, 16, moved));
@@ -162,7 +162,7 @@ TEST(Thin_plate_spline, interpolates_and_falls_back_to_the_mean_translation)
 TEST(Laplacian_editing, rigid_motion_is_not_exact_but_meets_the_handles)
 {
   const Learned& l = learned(Synthetic_family::hand);
-  const Indexed_mesh& mesh = l.model.examples[0].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(l.model.examples[0]).mesh;
   const Point_matrix moved = rigidly_moved(mesh.points);
   const double d = diagonal(mesh.points);
   const Handle_set handles = farthest_point_handles(mesh, 16, moved);
@@ -181,7 +181,7 @@ TEST(Laplacian_editing, rigid_motion_is_not_exact_but_meets_the_handles)
 
 TEST(Laplacian_editing, cotangent_laplacian_is_symmetric_with_zero_row_sums)
 {
-  const Indexed_mesh& mesh = learned(Synthetic_family::hand).model.examples[0].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(learned(Synthetic_family::hand).model.examples[0]).mesh;
   const Eigen::SparseMatrix<double> L = cotangent_laplacian(mesh);
   EXPECT_LE((Eigen::SparseMatrix<double>(L.transpose()) - L).norm(), 1e-12 * L.norm());
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(L.cols());
@@ -194,7 +194,7 @@ TEST(Laplacian_editing, cotangent_laplacian_is_symmetric_with_zero_row_sums)
 TEST(Shape_space_fit, handles_on_a_part_move_it_and_others_stay)
 {
   const Learned& l = learned(Synthetic_family::hand);
-  const Indexed_mesh& mesh = l.model.examples[0].mesh;
+  const Indexed_mesh mesh = to_labeled_mesh(l.model.examples[0]).mesh;
   const Point_matrix pose = l.truth.draw_pose(3);
   const Handle_set handles = handles_per_part(l.truth.mesh, 2, pose);
   Shape_space_fit fit(l.model);
@@ -213,7 +213,7 @@ TEST(Deformation_method, bad_handles_and_names_are_refused)
 {
   const Learned& l = learned(Synthetic_family::hexa_grid);
   const int n = l.model.examples[0].mesh.number_of_vertices();
-  const Point_matrix& rest = l.model.examples[0].mesh.points;
+  const Point_matrix rest = to_labeled_mesh(l.model.examples[0]).mesh.points;
   Handle_set out_of_range;
   out_of_range.vertices = {n + 3};
   out_of_range.targets = Point_matrix::Zero(1, 3);
@@ -239,6 +239,6 @@ TEST(Deformation_method, bad_handles_and_names_are_refused)
   }
   EXPECT_THROW(make_deformation_method("rbf", l.model), Input_error);
   EXPECT_THROW(make_deformation_method("mpm", l.model, 3), Input_error);
-  Laplacian_editing editing(l.model.examples[0].mesh);
+  Laplacian_editing editing(to_labeled_mesh(l.model.examples[0]).mesh);
   EXPECT_THROW(editing.deform(), Input_error); // no handles yet
 }

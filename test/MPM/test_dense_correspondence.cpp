@@ -347,10 +347,10 @@ TEST(Dense_correspondence, learns_and_deforms_remeshed_parts)
     if(t.name != "palm") EXPECT_GT(t.space.number_of_modes(), 0) << t.name;
   EXPECT_FALSE(model.rules.empty());
 
-  const Indexed_mesh& rest = model.examples[0].mesh;
+  const Indexed_mesh rest = to_labeled_mesh(model.examples[0]).mesh;
   Labeled_mesh example;
   example.mesh = rest;
-  example.face_labels = model.examples[0].face_labels;
+  example.face_labels = to_labeled_mesh(model.examples[0]).face_labels;
   Point_matrix stretched = rest.points;
   stretched.col(1) *= 1.1;
   const Handle_set handles = handles_per_part(example, 1, stretched);

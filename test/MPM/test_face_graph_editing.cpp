@@ -64,7 +64,7 @@ const Pipeline_reference& reference()
     Pipeline_reference ref;
     ref.cut = cut_mesh(small_hand().mesh.mesh, mpm_test::hand_cuts(small_hand()), Cutting_options(), "hand");
     ref.model = learn_morphable_part_model(ref.cut.mesh, small_hand().annotation);
-    ref.deformed = internal::solve_edit(ref.model, make_deformation_problem(ref.model), tip_handles(ref.model.examples[0].mesh));
+    ref.deformed = internal::solve_edit(ref.model, make_deformation_problem(ref.model), tip_handles(to_labeled_mesh(ref.model.examples[0]).mesh));
     ref.assembly = assemble(ref.model, part_graph_of_example(ref.model));
     return ref;
   }();
@@ -127,12 +127,12 @@ void run_pipeline(double tolerance)
   auto types = get(CGAL::dynamic_face_property_t<int>(), edited);
   auto seams = get(CGAL::dynamic_vertex_property_t<int>(), edited);
   copy_training_example(model, 0, edited, parts, parameters::face_part_type_map(types).vertex_is_seam_map(seams));
-  EXPECT_EQ(face_labels_from_map(edited, parts), ref.model.examples[0].face_labels);
+  EXPECT_EQ(face_labels_from_map(edited, parts), to_labeled_mesh(ref.model.examples[0]).face_labels);
   for(auto f : faces(edited))
     for(const Part_node& node : ref.model.examples[0].graph.nodes)
       if(node.label == get(parts, f)) EXPECT_EQ(get(types, f), node.type);
   expect_seams_where_parts_meet(edited, parts, seams);
-  const Handle_set h = tip_handles(ref.model.examples[0].mesh);
+  const Handle_set h = tip_handles(to_labeled_mesh(ref.model.examples[0]).mesh);
   std::vector<vertex_descriptor> vertex(vertices(edited).begin(), vertices(edited).end());
   std::vector<std::pair<vertex_descriptor, Point>> handles;
   for(int k = 0; k < h.size(); ++k)
@@ -142,7 +142,7 @@ void run_pipeline(double tolerance)
   EXPECT_EQ(deformed.report.iterations, ref.deformed.result.report.iterations);
   EXPECT_LT(largest_difference(to_indexed_mesh(edited).points, ref.deformed.mesh.points), tolerance * diagonal);
   // The edit moved the mesh: the comparison is not of two rest states.
-  EXPECT_GT(largest_difference(to_indexed_mesh(edited).points, ref.model.examples[0].mesh.points), 0.01 * diagonal);
+  EXPECT_GT(largest_difference(to_indexed_mesh(edited).points, to_labeled_mesh(ref.model.examples[0]).mesh.points), 0.01 * diagonal);
 
   // Symmetrize in place.
   Mesh symmetric;

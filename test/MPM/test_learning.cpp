@@ -206,7 +206,7 @@ TEST(Learning, corresponds_instances_with_different_connectivity)
   EXPECT_NE(std::find(stages.begin(), stages.end(), "correspondence of " + model.types[0].name), stages.end());
   for(const Part_node& node : model.examples[0].graph.nodes)
     EXPECT_GE(static_cast<int>(node.vertices.size()), model.types[0].number_of_vertices);
-  EXPECT_TRUE(model.examples[0].mesh.points.allFinite());
+  EXPECT_TRUE(to_labeled_mesh(model.examples[0]).mesh.points.allFinite());
   // The rebuilt tiles are stitched back to their former seam neighbours
   // (boundary dockings with merged seams), never to the tile after next:
   // the example is one piece again, open only where the strip was.
@@ -218,14 +218,14 @@ TEST(Learning, corresponds_instances_with_different_connectivity)
     EXPECT_FALSE(e.merged_seam.empty());
     EXPECT_EQ(std::abs(graph.nodes[e.first].label - graph.nodes[e.second].label), 1);
   }
-  const Surface_soundness input = check_surface(strip.mesh), example = check_surface(model.examples[0].mesh);
+  const Surface_soundness input = check_surface(strip.mesh), example = check_surface(to_labeled_mesh(model.examples[0]).mesh);
   EXPECT_EQ(example.components, 1);
   EXPECT_EQ(example.border_edges, input.border_edges);
   EXPECT_EQ(example.non_manifold_edges, 0);
   // The flipped face makes this tile's correspondence coarse (2% off the
   // input before stitching); stitching must not add much to that.
   const Corresponded_training rebuilt = correspond_training_inputs({{strip, tiles_annotation(3, 0.3)}});
-  EXPECT_LT(relative_hausdorff_distance(model.examples[0].mesh, strip.mesh),
+  EXPECT_LT(relative_hausdorff_distance(to_labeled_mesh(model.examples[0]).mesh, strip.mesh),
             relative_hausdorff_distance(rebuilt.inputs[0].mesh.mesh, strip.mesh) + 0.015);
 }
 

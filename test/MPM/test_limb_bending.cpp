@@ -24,8 +24,9 @@ TEST(Limb_bending, every_finger_tip_turns_about_the_palm_and_the_palm_is_held_aw
 {
   const Morphable_part_model& model = mpm_test::learned(Synthetic_family::hand, 3000).model;
   const Training_example& ex = model.examples.front();
+  const Labeled_mesh labeled = to_labeled_mesh(ex);
   const Handle_set handles = limb_bending_handles(model, 0, 0.1);
-  const double diagonal = mpm_test::diagonal(ex.mesh.points);
+  const double diagonal = mpm_test::diagonal(labeled.mesh.points);
   int root = 0;
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
     if(ex.graph.nodes[i].vertices.size() > ex.graph.nodes[std::size_t(root)].vertices.size()) root = int(i);
@@ -35,7 +36,7 @@ TEST(Limb_bending, every_finger_tip_turns_about_the_palm_and_the_palm_is_held_aw
   for(int k = 0; k < handles.size(); ++k)
   {
     const int v = handles.vertices[std::size_t(k)];
-    const double move = (handles.targets.row(k) - ex.mesh.points.row(v)).norm();
+    const double move = (handles.targets.row(k) - labeled.mesh.points.row(v)).norm();
     if(palm.count(v) > 0)
       EXPECT_EQ(move, 0.) << "palm vertex " << v;
     else

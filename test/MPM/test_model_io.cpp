@@ -12,6 +12,13 @@ using namespace CGAL::MPM;
 
 namespace {
 
+// Three faces around vertex 0 and two more closing the fan around vertex 1:
+// a manifold surface with a border.
+std::vector<Triangle> sample_triangles() { return {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 4, 3}, {1, 2, 4}}; }
+
+std::string payload_of(const std::string& file);
+std::string wrap_payload(const std::string& payload);
+
 Rigid_motion motion(double angle, double shift)
 {
   Rigid_motion m;
@@ -67,11 +74,10 @@ Morphable_part_model sample_model()
   rule.space = space(3, 2, 2);
   m.rules = {rule};
 
-  Training_example e;
-  e.name = "hand.off";
-  e.mesh.points = Point_matrix::Random(5, 3);
-  e.mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {1, 2, 4}};
-  e.face_labels = {0, 0, 0, 0, 3};
+  Labeled_mesh surface;
+  surface.mesh.points = Point_matrix::Random(5, 3);
+  surface.mesh.triangles = sample_triangles();
+  surface.face_labels = {0, 0, 0, 0, 3};
   Part_node a;
   a.type = 0;
   a.label = 0;
@@ -89,10 +95,32 @@ Morphable_part_model sample_model()
   g.rule = 0;
   g.coordinates = Eigen::Vector2d(0.5, -0.5);
   g.motion = motion(0.7, 3);
-  e.graph.nodes = {a, b};
-  e.graph.edges = {g};
-  m.examples = {e};
+  Part_graph graph;
+  graph.nodes = {a, b};
+  graph.edges = {g};
+  m.examples = {make_training_example("hand.off", surface, graph)};
   return m;
+}
+
+// `file` with the bytes `from` of its payload (found once) replaced by `to`,
+// its checksum and length made right: a file whose damage only the model's
+// consistency checks can find.
+std::string with_payload_bytes_replaced(const std::string& file, const std::string& from, const std::string& to)
+{
+  std::string payload = payload_of(file);
+  const std::size_t at = payload.find(from);
+  EXPECT_NE(at, std::string::npos);
+  EXPECT_EQ(payload.find(from, at + 1), std::string::npos);
+  return wrap_payload(payload.replace(at, from.size(), to));
+}
+
+// Integers as the model file writes them: a count (8 bytes) or an int (4).
+std::string encoded(std::initializer_list<std::pair<std::uint64_t, int>> values)
+{
+  std::string r;
+  for(const auto& [value, bytes] : values)
+    for(int i = 0; i < bytes; ++i) r.push_back(char(value >> (8 * i)));
+  return r;
 }
 
 // A file around `payload` with a correct header and checksum, to reach the
@@ -150,8 +178,8 @@ TEST(ModelIo, RoundTripIsByteIdenticalAndKeepsEveryField)
   EXPECT_EQ(r.rules[0].seam, m.rules[0].seam);
   EXPECT_EQ(r.rules[0].points[2].side, 1);
   EXPECT_EQ(r.examples[0].name, "hand.off");
-  EXPECT_EQ(r.examples[0].mesh.points, m.examples[0].mesh.points);
-  EXPECT_EQ(r.examples[0].face_labels, m.examples[0].face_labels);
+  EXPECT_EQ(to_labeled_mesh(r.examples[0]).mesh.points, to_labeled_mesh(m.examples[0]).mesh.points);
+  EXPECT_EQ(to_labeled_mesh(r.examples[0]).face_labels, to_labeled_mesh(m.examples[0]).face_labels);
   EXPECT_EQ(r.examples[0].graph.nodes[1].label, 3);
   EXPECT_EQ(r.examples[0].graph.edges[0].coordinates, m.examples[0].graph.edges[0].coordinates);
   EXPECT_EQ(r.examples[0].graph.edges[0].motion.translation, m.examples[0].graph.edges[0].motion.translation);
@@ -228,14 +256,17 @@ TEST(ModelIo, CorruptPayloadsWithValidChecksumsAreRejected)
 
 TEST(ModelIo, InconsistentIndicesNameTheElement)
 {
-  auto expect = [](const Morphable_part_model& m, const std::string& element, const std::string& problem) {
+  auto expect_file = [](const std::string& file, const std::string& element, const std::string& problem) {
     try {
-      deserialize_model(serialize_model(m), "bad.mpm");
+      deserialize_model(file, "bad.mpm");
       ADD_FAILURE() << "no error for " << element;
     } catch(const Input_error& e) {
       EXPECT_EQ(e.element(), element);
       EXPECT_TRUE(mpm_test::contains_all(e.what(), {"bad.mpm", problem}));
     }
+  };
+  auto expect = [&](const Morphable_part_model& m, const std::string& element, const std::string& problem) {
+    expect_file(serialize_model(m), element, problem);
   };
   Morphable_part_model m = sample_model();
   m.types[0].triangles[3][1] = 4;
@@ -268,8 +299,14 @@ TEST(ModelIo, InconsistentIndicesNameTheElement)
   m.rules[0].edges[1].target = 3;
   expect(m, "rule 0 edge 1", "target 3");
   m = sample_model();
-  m.examples[0].face_labels.pop_back();
-  expect(m, "example 0 (\"hand.off\")", "4 face labels for 5 faces");
+  // A face label less: labels {0, 0, 0, 0, 3} become {0, 0, 0, 0}.
+  expect_file(with_payload_bytes_replaced(serialize_model(m), encoded({{5, 8}, {0, 4}, {0, 4}, {0, 4}, {0, 4}, {3, 4}}),
+                                          encoded({{4, 8}, {0, 4}, {0, 4}, {0, 4}, {0, 4}})),
+              "example 0 (\"hand.off\")", "4 face labels for 5 faces");
+  // A triangle a surface mesh cannot hold: the last one repeats the first.
+  expect_file(with_payload_bytes_replaced(serialize_model(m), encoded({{1, 4}, {2, 4}, {4, 4}, {5, 8}}),
+                                          encoded({{0, 4}, {2, 4}, {1, 4}, {5, 8}})),
+              "example 0 (\"hand.off\") face 4", "non-manifold edge or vertex");
   m = sample_model();
   m.examples[0].graph.nodes[1].type = 7;
   expect(m, "example 0 (\"hand.off\") node 1", "part type 7");

@@ -147,6 +147,7 @@ std::map<std::string, double> leave_one_out_errors(const Morphable_part_model& m
 {
   std::map<std::string, double> errors;
   const Training_example& example = model.examples.front();
+  const Labeled_mesh labeled = to_labeled_mesh(example);
   for(std::size_t t = 0; t < model.types.size(); ++t) {
     std::vector<Point_matrix> instances;
     for(const Part_node& node : example.graph.nodes)
@@ -154,7 +155,7 @@ std::map<std::string, double> leave_one_out_errors(const Morphable_part_model& m
         // A stitched part lists the seam vertices inserted into it after its own.
         const std::size_t n = std::size_t(model.types[t].number_of_vertices);
         Point_matrix p(Eigen::Index(n), 3);
-        for(std::size_t i = 0; i < n; ++i) p.row(Eigen::Index(i)) = example.mesh.points.row(node.vertices[i]);
+        for(std::size_t i = 0; i < n; ++i) p.row(Eigen::Index(i)) = labeled.mesh.points.row(node.vertices[i]);
         instances.push_back(std::move(p));
       }
     if(instances.size() < 2) continue;
@@ -213,7 +214,7 @@ TEST_P(Real_mesh_learning, LearnsAndDeforms)
   // Hold the limb ends (the cut file's seeds) and the top of the mesh; step
   // the first limb forward and lift the top. Vertices are found by position
   // in the learned example, whose numbering learning may change.
-  const Indexed_mesh& rest = model.examples.front().mesh;
+  const Indexed_mesh rest = to_labeled_mesh(model.examples.front()).mesh;
   const double diag = diagonal(rest.points);
   const Point_matrix& input = cut.mesh.mesh.points;
   Handle_set handles;

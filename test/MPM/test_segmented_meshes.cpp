@@ -67,11 +67,12 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   MPM_REQUIRE_PSB(name);
   const Learned l = learn(name);
   const Training_example& ex = l.model.examples.front();
+  const Labeled_mesh labeled = to_labeled_mesh(ex);
   int corresponded_types = 0;
   for(const Part_type& t : l.model.types) corresponded_types += t.space.number_of_instances() >= 2;
   EXPECT_GE(corresponded_types, 2) << name;
 
-  const Surface_soundness rest = check_surface(ex.mesh);
+  const Surface_soundness rest = check_surface(labeled.mesh);
   EXPECT_EQ(rest.components, 1) << name;
   EXPECT_EQ(rest.border_edges, 0) << name;
   EXPECT_EQ(rest.non_manifold_edges, 0) << name;
@@ -83,14 +84,14 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
   // 0.38% (octopus_137; 0.55% while a move onto its curled arm tip turned
   // triangles and was undone); 0.55-0.69% before extremities were covered
   // (cover_missed_points()).
-  EXPECT_LT(relative_hausdorff_distance(ex.mesh, l.input.mesh.mesh), 0.005) << name;
+  EXPECT_LT(relative_hausdorff_distance(labeled.mesh, l.input.mesh.mesh), 0.005) << name;
 
   // Faces the edits may turn without turning anything inside out: folds
   // of the correspondence and spikes or slivers creased along two edges at
   // rest, which an edit flattens (octopus_137's symmetrize flattens a seam
   // sliver folded by 132 and 81 degrees at rest).
-  const std::vector<int> folded = folded_faces(ex.mesh, l.input.mesh.mesh),
-                         spikes = spike_faces(ex.mesh, CGAL_PI / 3., 2);
+  const std::vector<int> folded = folded_faces(labeled.mesh, l.input.mesh.mesh),
+                         spikes = spike_faces(labeled.mesh, CGAL_PI / 3., 2);
   // Seam moves that fold a face are not made, and seam vertices of faces
   // the correspondence folded move to unfold them (a sliver whose three
   // corners are on one seam all together): octopus_137 had 6 folded faces
@@ -121,9 +122,9 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
     for(int k = 0; k < handles.size(); ++k)
       EXPECT_LT((after.points.row(handles.vertices[std::size_t(k)]) - handles.targets.row(k)).norm(), 0.01 * diagonal)
         << name << " handle " << k;
-    const int solved_inverted = static_cast<int>(inverted_faces(after, problem.mesh, &ex.face_labels).size());
+    const int solved_inverted = static_cast<int>(inverted_faces(after, problem.mesh, &labeled.face_labels).size());
     after.points = unfold_faces(problem.mesh, solver.positions(), handles.vertices); // what mpm writes
-    const Surface_soundness s = check_surface(after, &problem.mesh, &ex.face_labels);
+    const Surface_soundness s = check_surface(after, &problem.mesh, &labeled.face_labels);
     EXPECT_EQ(s.components, 1) << name << " edit " << edit;
     EXPECT_EQ(s.border_edges, 0) << name << " edit " << edit;
     // The edit's targets are unfolded (unfold_target(): folds and creases)
@@ -131,7 +132,7 @@ TEST_P(Segmented_meshes, learned_example_and_edits_stay_one_closed_surface)
     // rest folds and spikes the edit flattens (the solver's result has 0-3;
     // before creases were unfolded, caricature left 1-4 in what mpm wrote).
     EXPECT_LE(s.inverted_faces, solved_inverted) << name << " edit " << edit;
-    for(int f : inverted_faces(after, problem.mesh, &ex.face_labels))
+    for(int f : inverted_faces(after, problem.mesh, &labeled.face_labels))
       EXPECT_TRUE(std::binary_search(rest_faults.begin(), rest_faults.end(), f)) << name << " edit " << edit << " face " << f;
   }
 }
@@ -177,9 +178,10 @@ TEST_P(Segmented_meshes, the_training_graph_is_reassembled_from_its_instances)
   MPM_REQUIRE_PSB(name);
   const Learned l = learn(name);
   const Training_example& ex = l.model.examples.front();
+  const Labeled_mesh labeled = to_labeled_mesh(ex);
   const Assembly a = assemble(l.model, part_graph_of_example(l.model), training_assembly_options(l.model));
-  EXPECT_EQ(a.mesh.number_of_vertices(), ex.mesh.number_of_vertices()) << name;
-  EXPECT_EQ(a.mesh.number_of_faces(), ex.mesh.number_of_faces()) << name;
+  EXPECT_EQ(a.mesh.number_of_vertices(), labeled.mesh.number_of_vertices()) << name;
+  EXPECT_EQ(a.mesh.number_of_faces(), labeled.mesh.number_of_faces()) << name;
   const Surface_soundness s = check_surface(a.mesh);
   EXPECT_EQ(s.components, 1) << name;
   EXPECT_EQ(s.border_edges, 0) << name;
@@ -187,8 +189,8 @@ TEST_P(Segmented_meshes, the_training_graph_is_reassembled_from_its_instances)
   for(std::size_t i = 0; i < ex.graph.nodes.size(); ++i)
     for(std::size_t k = 0; k < ex.graph.nodes[i].vertices.size(); ++k)
       worst = std::max(worst, (a.mesh.points.row(a.vertex(int(i), int(k))) -
-                               ex.mesh.points.row(ex.graph.nodes[i].vertices[k])).norm());
-  EXPECT_LT(worst, 0.01 * CGAL::MPM::internal::bounding_box_diagonal(ex.mesh.points)) << name;
+                               labeled.mesh.points.row(ex.graph.nodes[i].vertices[k])).norm());
+  EXPECT_LT(worst, 0.01 * CGAL::MPM::internal::bounding_box_diagonal(labeled.mesh.points)) << name;
 }
 
 // One more segment before the last of the first chain that has three
@@ -345,7 +347,7 @@ TEST(Segmented_meshes_together, own_shapes_of_two_meshes_are_two_types)
   EXPECT_GT(own_per_mesh[0], 0);
   EXPECT_GT(own_per_mesh[1], 0);
   for(const Training_example& ex : model.examples)
-    EXPECT_EQ(check_surface(ex.mesh).border_edges, 0) << ex.name;
+    EXPECT_EQ(check_surface(to_labeled_mesh(ex).mesh).border_edges, 0) << ex.name;
 }
 
 // octopus_124's arm tips: every template tried covers the other thin arms
@@ -363,11 +365,11 @@ TEST(Segmented_meshes_untangled, stitched_templates_crossing_at_seams_are_moved_
   const std::string name = "hand_194";
   MPM_REQUIRE_PSB(name);
   const Learned l = learn(name);
-  const Surface_soundness s = check_surface(l.model.examples.front().mesh);
+  const Surface_soundness s = check_surface(to_labeled_mesh(l.model.examples.front()).mesh);
   EXPECT_EQ(s.self_intersections, 0);
   EXPECT_EQ(s.border_edges, 0);
   EXPECT_EQ(s.components, 1);
-  EXPECT_LT(relative_hausdorff_distance(l.model.examples.front().mesh, l.input.mesh.mesh), 0.003);
+  EXPECT_LT(relative_hausdorff_distance(to_labeled_mesh(l.model.examples.front()).mesh, l.input.mesh.mesh), 0.003);
 }
 
 // Stitching splits the triangles along a seam into fans, so a vertex beside
@@ -382,7 +384,7 @@ TEST(Segmented_meshes_untangled, vertices_beside_a_seam_are_not_pulled_onto_it)
   {
     MPM_REQUIRE_PSB(name);
     const Learned l = learn(name);
-    const Indexed_mesh& example = l.model.examples.front().mesh;
+    const Indexed_mesh example = to_labeled_mesh(l.model.examples.front()).mesh;
     const Surface_soundness s = check_surface(example);
     EXPECT_LE(s.self_intersections, most) << name;
     EXPECT_EQ(s.border_edges, 0) << name;
@@ -401,7 +403,7 @@ TEST(Segmented_meshes_untangled, a_sliver_folded_by_a_seam_is_turned_back)
 {
   MPM_REQUIRE_PSB(std::string("ant_97"));
   const Learned l = learn("ant_97");
-  const Indexed_mesh& example = l.model.examples.front().mesh;
+  const Indexed_mesh example = to_labeled_mesh(l.model.examples.front()).mesh;
   EXPECT_EQ(folded_faces(example, l.input.mesh.mesh).size(), 0u); // 1 before
   const Surface_soundness s = check_surface(example);
   EXPECT_EQ(s.self_intersections, 0);
@@ -421,7 +423,7 @@ TEST(Segmented_meshes_tubes, thin_arms_are_corresponded_along_the_tube)
   MPM_REQUIRE_PSB(std::string("octopus_124"));
   const Learned l = learn("octopus_124");
   const Morphable_part_model& model = l.model;
-  const Indexed_mesh& example = model.examples.front().mesh;
+  const Indexed_mesh example = to_labeled_mesh(model.examples.front()).mesh;
   EXPECT_LT(relative_hausdorff_distance(example, l.input.mesh.mesh), 0.005);
   EXPECT_EQ(check_surface(example).self_intersections, 0);
   EXPECT_EQ(folded_faces(example, l.input.mesh.mesh).size(), 0u);
@@ -443,8 +445,9 @@ TEST(Segmented_meshes_tubes, arms_in_different_poses_are_corresponded)
   const Learned l = learn("octopus_126");
   const Morphable_part_model& model = l.model;
   const Training_example& example = model.examples.front();
-  EXPECT_LT(relative_hausdorff_distance(example.mesh, l.input.mesh.mesh), 0.005);
-  EXPECT_EQ(check_surface(example.mesh).components, 1);
+  const Labeled_mesh labeled = to_labeled_mesh(example);
+  EXPECT_LT(relative_hausdorff_distance(labeled.mesh, l.input.mesh.mesh), 0.005);
+  EXPECT_EQ(check_surface(labeled.mesh).components, 1);
   std::map<std::string, int> instances;
   for(const Part_node& n : example.graph.nodes) ++instances[model.types[std::size_t(n.type)].name];
   for(const std::string& arm : {"chain1", "tip2"})
@@ -498,11 +501,11 @@ TEST(Segmented_meshes_finer, a_finely_triangulated_scan_is_stitched_closed)
   input.mesh = split_in_four(read_labeled_mesh(psb_file("ant_97.off"), psb_file("ant_97.seg")));
   input.annotation = propose_part_types(input.mesh).annotation;
   const Morphable_part_model model = learn_morphable_part_model({input});
-  const Surface_soundness s = check_surface(model.examples.front().mesh);
+  const Surface_soundness s = check_surface(to_labeled_mesh(model.examples.front()).mesh);
   EXPECT_EQ(s.components, 1);
   EXPECT_EQ(s.border_edges, 0);
   EXPECT_EQ(s.non_manifold_edges, 0);
-  EXPECT_LT(relative_hausdorff_distance(model.examples.front().mesh, input.mesh.mesh), 0.005);
+  EXPECT_LT(relative_hausdorff_distance(to_labeled_mesh(model.examples.front()).mesh, input.mesh.mesh), 0.005);
 }
 
 // octopus_124 split in four: segments whose border touches itself at a
@@ -521,7 +524,7 @@ TEST(Segmented_meshes_finer, a_segment_whose_border_touches_itself_is_stitched_o
   Learning_options options;
   options.warning = [&](const std::string& w) { warnings.push_back(w); };
   const Morphable_part_model model = learn_morphable_part_model({input}, options);
-  const Surface_soundness s = check_surface(model.examples.front().mesh);
+  const Surface_soundness s = check_surface(to_labeled_mesh(model.examples.front()).mesh);
   EXPECT_EQ(s.border_edges, 0);
   EXPECT_EQ(s.components, 1);
   EXPECT_EQ(s.non_manifold_edges, 0);

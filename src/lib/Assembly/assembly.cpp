@@ -283,13 +283,14 @@ Assembly_options training_assembly_options(const Morphable_part_model& model, in
     throw Input_error("model", "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   const Training_example& ex = model.examples[example];
+  const Point_matrix rest = rest_positions(ex);
   Assembly_options o;
   for(const Part_node& node : ex.graph.nodes)
   {
     // A node of a stitched example lists the seam vertices inserted into it
     // after its type's own: the target is its own vertices.
     const auto own = std::size_t(model.types[std::size_t(node.type)].number_of_vertices);
-    o.targets.push_back(gather_rows(ex.mesh.points, std::vector<int>(node.vertices.begin(), node.vertices.begin() + std::ptrdiff_t(own))));
+    o.targets.push_back(gather_rows(rest, std::vector<int>(node.vertices.begin(), node.vertices.begin() + std::ptrdiff_t(own))));
     o.placements.push_back(Rigid_motion());
   }
   return o;

@@ -71,7 +71,8 @@ Solved_edit solve_edit(const Morphable_part_model& model, const Embedding_proble
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   const Training_example& input = model.examples[example];
   const std::string name = "example " + std::to_string(example) + " (" + input.name + ")";
-  check_handles(handles, input.mesh, name, options.handles_source);
+  const Labeled_mesh rest = to_labeled_mesh(input);
+  check_handles(handles, rest.mesh, name, options.handles_source);
 
   Solved_edit edit;
   Edit_result& r = edit.result;
@@ -89,15 +90,15 @@ Solved_edit solve_edit(const Morphable_part_model& model, const Embedding_proble
     throw Computation_error("the solver produced non-finite positions or energy for " + name +
                             " (try a smaller handle weight or handle offsets)");
   r.inverted_faces_solved =
-    static_cast<int>(inverted_faces(at_positions(input.mesh, solved), input.mesh, &input.face_labels).size());
+    static_cast<int>(inverted_faces(at_positions(rest.mesh, solved), rest.mesh, &rest.face_labels).size());
 
   const Clock::time_point unfold_start = Clock::now();
-  edit.mesh = at_positions(input.mesh, options.unfold ? unfold_faces(input.mesh, solved, handles.vertices) : solved);
+  edit.mesh = at_positions(rest.mesh, options.unfold ? unfold_faces(rest.mesh, solved, handles.vertices) : solved);
   r.unfold_ms = milliseconds_since(unfold_start);
-  r.inverted_faces_written = static_cast<int>(inverted_faces(edit.mesh, input.mesh, &input.face_labels).size());
+  r.inverted_faces_written = static_cast<int>(inverted_faces(edit.mesh, rest.mesh, &rest.face_labels).size());
 
-  const double diagonal = bounding_box_diagonal(input.mesh.points);
-  const double moved = (edit.mesh.points - input.mesh.points).rowwise().norm().maxCoeff() / diagonal;
+  const double diagonal = bounding_box_diagonal(rest.mesh.points);
+  const double moved = (edit.mesh.points - rest.mesh.points).rowwise().norm().maxCoeff() / diagonal;
   if(diagonal > 0. && moved > farthest_sensible_move)
     throw Computation_error("the edit of " + name + " moves vertices by up to " + number_text(moved) +
                             " bounding-box diagonals (more than " + number_text(farthest_sensible_move) +

@@ -31,7 +31,7 @@ Embedding_problem make_problem(const Morphable_part_model& model, int example, c
   // A stitched example (parts corresponded separately) has merged seams.
   const internal::Graph_refinement refined = internal::refine_part_graph(model, ex.graph);
   return internal::make_part_graph_problem(
-    model, ex.graph, ex.mesh,
+    model, ex.graph, to_labeled_mesh(ex).mesh,
     [&](int node, const Shape_space&, const Eigen::VectorXd& coordinates, const Point_matrix& rest,
         const std::string&) { return policy(model.types[ex.graph.nodes[node].type], coordinates, rest); },
     pair_sigmas, refined.empty() ? nullptr : &refined.nodes, true);
@@ -74,13 +74,14 @@ bool scaled_coordinates_fold(const Morphable_part_model& model, int example, dou
 {
   // A missing example is make_problem()'s to report.
   if(factor == 1. || example < 0 || example >= static_cast<int>(model.examples.size())) return false;
+  const Point_matrix rest = rest_positions(model.examples[example]);
   for(const Part_node& node : model.examples[example].graph.nodes)
   {
     const Part_type& type = model.types[node.type];
     const std::vector<int> own(node.vertices.begin(), node.vertices.begin() + type.number_of_vertices);
     Indexed_mesh before, after;
     before.triangles = after.triangles = type.triangles;
-    before.points = internal::to_space_frame(node.motion, internal::gather_rows(model.examples[example].mesh.points, own));
+    before.points = internal::to_space_frame(node.motion, internal::gather_rows(rest, own));
     after.points = exaggerated_target(type, node.coordinates, before.points, factor, false);
     if(!inverted_faces(after, before).empty()) return true;
   }

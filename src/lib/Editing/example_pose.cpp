@@ -12,16 +12,17 @@ void set_example_pose(Morphable_part_model& model, int example, const Indexed_me
     throw Input_error("model", "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   Training_example& ex = model.examples[example];
-  if(mesh.number_of_vertices() != ex.mesh.number_of_vertices())
+  const Indexed_mesh rest = to_labeled_mesh(ex).mesh;
+  if(mesh.number_of_vertices() != rest.number_of_vertices())
     throw Input_error(mesh_name, "", "has " + std::to_string(mesh.number_of_vertices()) +
                                        " vertices; the model's example " + std::to_string(example) + " (" + ex.name +
-                                       ") has " + std::to_string(ex.mesh.number_of_vertices()));
-  if(mesh.number_of_faces() != ex.mesh.number_of_faces())
+                                       ") has " + std::to_string(rest.number_of_vertices()));
+  if(mesh.number_of_faces() != rest.number_of_faces())
     throw Input_error(mesh_name, "", "has " + std::to_string(mesh.number_of_faces()) +
                                        " faces; the model's example " + std::to_string(example) + " (" + ex.name +
-                                       ") has " + std::to_string(ex.mesh.number_of_faces()));
+                                       ") has " + std::to_string(rest.number_of_faces()));
   for(int f = 0; f < mesh.number_of_faces(); ++f)
-    if(mesh.triangles[f] != ex.mesh.triangles[f])
+    if(mesh.triangles[f] != rest.triangles[f])
       throw Input_error(mesh_name, "face " + std::to_string(f),
                         "differs from the model's example " + std::to_string(example) + " (" + ex.name +
                           "): not a pose of the same mesh");
@@ -44,7 +45,7 @@ void set_example_pose(Morphable_part_model& model, int example, const Indexed_me
       vertices.push_back(ex.graph.nodes[q.side == 0 ? edge.first : edge.second].vertices[q.local]);
     rule.space.fit(gather(vertices), edge.coordinates, edge.motion);
   }
-  ex.mesh.points = mesh.points;
+  set_rest_positions(ex, mesh.points);
 }
 
 } // namespace MPM

@@ -63,10 +63,10 @@ std::map<int, std::vector<int>> seams_of_root(const Training_example& ex, int ro
 // The root's vertices away from its seams: farther along its edges from
 // every seam than the seams' mean radius. Held up to a seam, the root would
 // hold the first ring of the limb too, and the limb could not turn there.
-std::vector<int> root_away_from_seams(const Training_example& ex, int root,
+std::vector<int> root_away_from_seams(const Training_example& ex, const Labeled_mesh& rest, int root,
                                       const std::map<int, std::vector<int>>& seams)
 {
-  const Point_matrix& p = ex.mesh.points;
+  const Point_matrix& p = rest.mesh.points;
   std::vector<int> all;
   double radius = 0.;
   for(const auto& [node, seam] : seams)
@@ -79,8 +79,8 @@ std::vector<int> root_away_from_seams(const Training_example& ex, int root,
   if(!seams.empty())
   {
     std::vector<Triangle> root_triangles;
-    for(std::size_t f = 0; f < ex.mesh.triangles.size(); ++f)
-      if(ex.face_labels[f] == ex.graph.nodes[std::size_t(root)].label) root_triangles.push_back(ex.mesh.triangles[f]);
+    for(std::size_t f = 0; f < rest.mesh.triangles.size(); ++f)
+      if(rest.face_labels[f] == ex.graph.nodes[std::size_t(root)].label) root_triangles.push_back(rest.mesh.triangles[f]);
     from_seams = internal::edge_graph_distances(p, internal::mesh_edges(root_triangles), all);
   }
   const double margin = seams.empty() ? 0. : radius / double(seams.size());
@@ -106,7 +106,8 @@ Handle_set limb_bending_handles(const Morphable_part_model& model, int example, 
     if(ex.graph.nodes[i].vertices.size() > ex.graph.nodes[std::size_t(root)].vertices.size()) root = int(i);
   const std::vector<int> toward_root = steps_toward(root, g);
   const std::map<int, std::vector<int>> seams = seams_of_root(ex, root);
-  const Point_matrix& p = ex.mesh.points;
+  const Labeled_mesh rest = to_labeled_mesh(ex);
+  const Point_matrix& p = rest.mesh.points;
   const double move = relative_move * internal::bounding_box_diagonal(p);
   std::vector<int> vertices;
   std::vector<Eigen::RowVector3d> targets;
@@ -129,7 +130,7 @@ Handle_set limb_bending_handles(const Morphable_part_model& model, int example, 
     vertices.push_back(tip);
     targets.push_back(pivot + (Eigen::AngleAxisd(angle, arm.cross(side).normalized()) * arm).transpose());
   }
-  for(int x : root_away_from_seams(ex, root, seams))
+  for(int x : root_away_from_seams(ex, rest, root, seams))
     if(std::find(vertices.begin(), vertices.end(), x) == vertices.end())
     {
       vertices.push_back(x);

@@ -262,10 +262,11 @@ std::string payload_of(const Morphable_part_model& model)
 
   w.count(model.examples.size());
   for(const Training_example& e : model.examples) {
+    const Labeled_mesh surface = to_labeled_mesh(e);
     w.string(e.name);
-    w.matrix(e.mesh.points);
-    w.triangles(e.mesh.triangles);
-    w.ints(e.face_labels);
+    w.matrix(surface.mesh.points);
+    w.triangles(surface.mesh.triangles);
+    w.ints(surface.face_labels);
     w.count(e.graph.nodes.size());
     for(const Part_node& n : e.graph.nodes) {
       w.i32(n.type);
@@ -287,7 +288,9 @@ std::string payload_of(const Morphable_part_model& model)
   return std::move(w.bytes);
 }
 
-Morphable_part_model model_of(Reader& r)
+// The examples' meshes go to `example_meshes`, to be checked before they
+// become the examples' surface meshes.
+Morphable_part_model model_of(Reader& r, std::vector<Labeled_mesh>& example_meshes)
 {
   Morphable_part_model model;
   Model_parameters& p = model.parameters;
@@ -324,11 +327,13 @@ Morphable_part_model model_of(Reader& r)
   }
 
   model.examples.resize(r.count(8 + 16 + 8 + 8 + 8 + 8));
-  for(Training_example& e : model.examples) {
+  example_meshes.resize(model.examples.size());
+  for(std::size_t i = 0; i < model.examples.size(); ++i) {
+    Training_example& e = model.examples[i];
     e.name = r.string();
-    e.mesh.points = r.matrix<Point_matrix>();
-    e.mesh.triangles = r.triangles();
-    e.face_labels = r.ints();
+    example_meshes[i].mesh.points = r.matrix<Point_matrix>();
+    example_meshes[i].mesh.triangles = r.triangles();
+    example_meshes[i].face_labels = r.ints();
     e.graph.nodes.resize(r.count(8 + 8 + 8 + 12 * 8));
     for(Part_node& n : e.graph.nodes) {
       n.type = r.i32();
@@ -354,10 +359,18 @@ Morphable_part_model model_of(Reader& r)
 // ----------------------------------------------------------------------------
 // Consistency of what parsed: every index other code will follow.
 
+std::string example_element(int e, const std::string& name)
+{
+  return "example " + std::to_string(e) + " (\"" + name + "\")";
+}
+
 class Model_checker
 {
 public:
-  Model_checker(const Morphable_part_model& m, const std::string& source) : m_(m), source_(source) {}
+  Model_checker(const Morphable_part_model& m, const std::vector<Labeled_mesh>& example_meshes,
+                const std::string& source)
+    : m_(m), example_meshes_(example_meshes), source_(source)
+  {}
 
   void check() const
   {
@@ -407,14 +420,15 @@ private:
   void check_example(int e) const
   {
     const Training_example& ex = m_.examples[e];
-    const std::string element = "example " + std::to_string(e) + " (\"" + ex.name + "\")";
-    const int nv = ex.mesh.number_of_vertices();
-    for(std::size_t f = 0; f < ex.mesh.triangles.size(); ++f)
-      for(int v : ex.mesh.triangles[f])
+    const Labeled_mesh& surface = example_meshes_[std::size_t(e)];
+    const std::string element = example_element(e, ex.name);
+    const int nv = surface.mesh.number_of_vertices();
+    for(std::size_t f = 0; f < surface.mesh.triangles.size(); ++f)
+      for(int v : surface.mesh.triangles[f])
         in_range(v, nv, element + " triangle " + std::to_string(f), "vertex");
-    if(ex.face_labels.size() != ex.mesh.triangles.size())
-      fail(element, std::to_string(ex.face_labels.size()) + " face labels for " +
-                      std::to_string(ex.mesh.triangles.size()) + " faces");
+    if(surface.face_labels.size() != surface.mesh.triangles.size())
+      fail(element, std::to_string(surface.face_labels.size()) + " face labels for " +
+                      std::to_string(surface.mesh.triangles.size()) + " faces");
     const auto& nodes = ex.graph.nodes;
     for(std::size_t i = 0; i < nodes.size(); ++i)
       in_range(nodes[i].type, int(m_.types.size()), element + " node " + std::to_string(i), "part type");
@@ -524,6 +538,7 @@ private:
   }
 
   const Morphable_part_model& m_;
+  const std::vector<Labeled_mesh>& example_meshes_;
   std::string source_;
 };
 
@@ -568,8 +583,18 @@ Morphable_part_model deserialize_model(const std::string& bytes, const std::stri
     throw Input_error(source, "", "damaged model file (checksum mismatch)");
 
   Reader reader(payload, std::size_t(length), source);
-  Morphable_part_model model = model_of(reader);
-  Model_checker(model, source).check();
+  std::vector<Labeled_mesh> example_meshes;
+  Morphable_part_model model = model_of(reader, example_meshes);
+  Model_checker(model, example_meshes, source).check();
+  for(std::size_t e = 0; e < model.examples.size(); ++e) {
+    Training_example& example = model.examples[e];
+    try {
+      example = make_training_example(example.name, example_meshes[e], std::move(example.graph));
+    } catch(const Input_error& error) {
+      throw Input_error(source, example_element(int(e), example.name) + " " + error.element(),
+                        "inconsistent model: " + error.problem());
+    }
+  }
   model.update_grammar();
   return model;
 }

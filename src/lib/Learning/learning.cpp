@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <CGAL/MPM/Input_error.h>
 #include <CGAL/MPM/Learning/Part_type_proposal.h>
+#include <CGAL/MPM/internal/Surface_mesh_repair.h>
 #include <CGAL/MPM/internal/Edge_faces.h>
 #include <CGAL/MPM/internal/Edge_graph_distance.h>
 #include <CGAL/MPM/internal/Part_graph_problem.h>
@@ -278,27 +279,27 @@ void add_virtual_edges(const Point_matrix& from, const std::vector<int>& from_po
 // An example with merged seams becomes one mesh: its parts' border edges
 // split at the other side's seam vertices, identified vertices shared, the
 // seams straightened on `input`, the surface the example approximates.
-void stitch_example(const Morphable_part_model& model, Training_example& example, const Indexed_mesh& input)
+void stitch_example(const Morphable_part_model& model, Part_graph& graph, Labeled_mesh& surface,
+                    const Indexed_mesh& input)
 {
-  Part_graph& graph = example.graph;
   if(std::all_of(graph.edges.begin(), graph.edges.end(), [](const Part_edge& e) { return e.merged_seam.empty(); }))
     return;
   const internal::Graph_refinement refined = internal::refine_part_graph(model, graph);
   std::vector<Point_matrix> placed;
   for(std::size_t i = 0; i < graph.nodes.size(); ++i)
-    placed.push_back(internal::refine_points(internal::gather_rows(example.mesh.points, graph.nodes[i].vertices),
+    placed.push_back(internal::refine_points(internal::gather_rows(surface.mesh.points, graph.nodes[i].vertices),
                                              refined.nodes[i].inserted));
   std::vector<int> face_nodes;
-  example.mesh = internal::stitch_part_graph(model, graph, refined, placed, &face_nodes);
-  example.face_labels.clear();
-  for(int node : face_nodes) example.face_labels.push_back(graph.nodes[node].label);
+  surface.mesh = internal::stitch_part_graph(model, graph, refined, placed, &face_nodes);
+  surface.face_labels.clear();
+  for(int node : face_nodes) surface.face_labels.push_back(graph.nodes[node].label);
   std::set<std::pair<int, int>> merged;
   for(const Part_edge& e : graph.edges)
     if(!e.merged_seam.empty()) {
       const int a = graph.nodes[std::size_t(e.first)].label, b = graph.nodes[std::size_t(e.second)].label;
       merged.insert({std::min(a, b), std::max(a, b)});
     }
-  example.mesh.points = internal::smoothed_seams(example.mesh, example.face_labels, merged, input);
+  surface.mesh.points = internal::smoothed_seams(surface.mesh, surface.face_labels, merged, input);
 }
 
 // The labels of the faces on edges of one face (open seams, holes).
@@ -540,10 +541,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
 
   for(std::size_t e = 0; e < inputs.size(); ++e)
   {
-    Training_example example;
-    example.name = inputs[e].mesh.source;
-    example.mesh = inputs[e].mesh.mesh;
-    example.face_labels = inputs[e].mesh.face_labels;
+    Part_graph graph;
     std::map<int, int> node_of_part;
     for(std::size_t p = 0; p < parts.size(); ++p)
     {
@@ -555,8 +553,8 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
       node.vertices = parts[p].vertices;
       node.coordinates = space.instance_coordinates.col(parts[p].instance);
       node.motion = space.instance_motions[parts[p].instance];
-      node_of_part[static_cast<int>(p)] = static_cast<int>(example.graph.nodes.size());
-      example.graph.nodes.push_back(std::move(node));
+      node_of_part[static_cast<int>(p)] = static_cast<int>(graph.nodes.size());
+      graph.nodes.push_back(std::move(node));
     }
     for(std::size_t r = 0; r < model.rules.size(); ++r)
       for(const Oriented_observation& oo : rule_observations[r])
@@ -571,16 +569,17 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
         edge.coordinates = space.instance_coordinates.col(instance_in_rule[oo.observation]);
         edge.motion = space.instance_motions[instance_in_rule[oo.observation]];
         edge.merged_seam = oo.flipped ? swapped(o.merged) : o.merged;
-        example.graph.edges.push_back(std::move(edge));
+        graph.edges.push_back(std::move(edge));
       }
     const Training_input& input = originals ? (*originals)[e] : inputs[e];
-    stitch_example(model, example, input.mesh.mesh);
+    Labeled_mesh surface = inputs[e].mesh;
+    stitch_example(model, graph, surface, input.mesh.mesh);
     // Stitching corresponded parts back together can fail where a
     // template's border folds along its seam; say so rather than hand edits
     // a surface with a gap the input did not have.
     if(labels_at_open_edges(input.mesh.mesh, input.mesh.face_labels).empty())
     {
-      const std::set<int> open = labels_at_open_edges(example.mesh, example.face_labels);
+      const std::set<int> open = labels_at_open_edges(surface.mesh, surface.face_labels);
       if(!open.empty())
       {
         std::string labels;
@@ -590,7 +589,7 @@ Morphable_part_model learn_corresponded(const std::vector<Training_input>& input
              "along the seam); edits will show a gap. Give those segments types of their own, or landmarks");
       }
     }
-    model.examples.push_back(std::move(example));
+    model.examples.push_back(make_training_example(inputs[e].mesh.source, surface, std::move(graph)));
   }
   model.update_grammar();
   progress("done", 1.);
@@ -608,7 +607,8 @@ bool untangle_rebuilt_inputs(const Morphable_part_model& model, const std::vecto
   for(std::size_t e = 0; e < model.examples.size(); ++e)
   {
     const Training_example& example = model.examples[e];
-    const Point_matrix untangled = internal::untangled_positions(example.mesh, example.face_labels, originals[e].mesh);
+    const Labeled_mesh surface = to_labeled_mesh(example);
+    const Point_matrix untangled = internal::untangled_positions(surface.mesh, surface.face_labels, originals[e].mesh);
     if(untangled.rows() == 0) continue;
     Labeled_mesh& rebuilt = corresponded.inputs[e].mesh;
     const std::map<int, std::vector<int>> faces_of_label = faces_by_label(rebuilt);
@@ -621,7 +621,7 @@ bool untangle_rebuilt_inputs(const Morphable_part_model& model, const std::vecto
       for(std::size_t l = 0; l < vertices.size(); ++l)
       {
         const int v = node.vertices[l];
-        if(untangled.row(v) == example.mesh.points.row(v)) continue;
+        if(untangled.row(v) == surface.mesh.points.row(v)) continue;
         rebuilt.mesh.points.row(vertices[l]) = untangled.row(v);
         moved = true;
       }
@@ -632,11 +632,16 @@ bool untangle_rebuilt_inputs(const Morphable_part_model& model, const std::vecto
 
 } // namespace
 
-Morphable_part_model learn_morphable_part_model(const std::vector<Training_input>& inputs,
+Morphable_part_model learn_morphable_part_model(const std::vector<Training_input>& given,
                                                 const Learning_options& options)
 {
-  if(inputs.empty()) throw Input_error("", "", "no training mesh given");
-  for(const Training_input& input : inputs) validate_labeled_mesh(input.mesh);
+  if(given.empty()) throw Input_error("", "", "no training mesh given");
+  for(const Training_input& input : given) validate_labeled_mesh(input.mesh);
+  std::vector<Training_input> inputs = given;
+  for(Training_input& input : inputs) {
+    const std::string repaired = internal::make_surface_mesh_compatible(input.mesh.mesh, input.mesh.source);
+    if(!repaired.empty() && options.warning) options.warning(input.mesh.source + ": " + repaired);
+  }
   validate_seam_counts(inputs);
   Corresponded_training corresponded = correspond_training_inputs(inputs, options);
   // With no type corresponded, the inputs are the user's, but segments that

@@ -89,13 +89,15 @@ void copy_training_example(const Morphable_part_model& model, int example, Mutab
     throw Input_error("model", "example " + std::to_string(example),
                       "does not exist (the model has " + std::to_string(model.examples.size()) + " examples)");
   const Training_example& e = model.examples[std::size_t(example)];
+  const Labeled_mesh rest = to_labeled_mesh(e);
   std::map<int, int> type_of_label;
   for(const Part_node& node : e.graph.nodes) type_of_label[node.label] = node.type;
   const auto type_of = [&](std::size_t t) {
-    const auto it = type_of_label.find(e.face_labels[t]);
+    const auto it = type_of_label.find(rest.face_labels[t]);
     return it == type_of_label.end() ? -1 : it->second;
   };
-  internal::write_part_maps(e.mesh, g, copy_to_face_graph(e.mesh, g, np), e.face_labels, type_of, face_labels, np);
+  internal::write_part_maps(rest.mesh, g, copy_to_face_graph(rest.mesh, g, np), rest.face_labels, type_of,
+                            face_labels, np);
 }
 
 /// \ingroup PkgMPMRef

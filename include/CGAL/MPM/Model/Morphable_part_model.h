@@ -4,10 +4,10 @@
 #define CGAL_MPM_MORPHABLE_PART_MODEL_H
 
 #include <CGAL/MPM/Model/Docking_rule.h>
-#include <CGAL/MPM/Indexed_mesh.h>
 #include <CGAL/MPM/Model/Model_parameters.h>
 #include <CGAL/MPM/Model/Part_graph.h>
 #include <CGAL/MPM/Model/Part_type.h>
+#include <CGAL/MPM/Model/Training_example.h>
 
 #include <memory>
 #include <string>
@@ -17,16 +17,6 @@ namespace CGAL {
 namespace MPM {
 
 class Shape_grammar;
-
-/// \ingroup PkgMPMRef
-/// One training mesh and its part graph.
-struct Training_example
-{
-  std::string name;    ///< where it came from (file name)
-  Indexed_mesh mesh;   ///< the rest geometry
-  std::vector<int> face_labels; ///< per-face part label
-  Part_graph graph;    ///< its instances and dockings
-};
 
 /// \ingroup PkgMPMRef
 /// A learned morphable part model: part types with their shape spaces,
