@@ -17,6 +17,7 @@
 #include <CGAL/MPM/Model/Morphable_part_model.h>
 #include <CGAL/MPM/IO/Part_graph_io.h>
 #include <CGAL/MPM/Learning/learn_morphable_part_model.h>
+#include <CGAL/MPM/internal/Surface_mesh_repair.h>
 
 #include <gtest/gtest.h>
 
@@ -397,6 +398,36 @@ TEST(BadInput, NonManifoldEdgesAreAcceptedAndStayFinite)
               return mpm_test::contains_all(w, {"fin: non-manifold", "3 vertices were copied"});
             }),
             1) << (warnings.empty() ? "" : warnings.front());
+}
+
+// A face turned against its neighbours is turned back, not the rest of the
+// surface after it: a closed surface stays outward however the faces were
+// visited. The model keeps its examples as surface meshes, which need one
+// orientation.
+TEST(BadInput, AFaceFlippedAgainstItsNeighboursIsTurnedBack)
+{
+  Indexed_mesh octahedron;
+  octahedron.points.resize(6, 3);
+  octahedron.points << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
+  octahedron.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for(int first : {0, 5}) {
+    Indexed_mesh flipped = octahedron;
+    std::swap(flipped.triangles[std::size_t(first)][1], flipped.triangles[std::size_t(first)][2]);
+    const std::string said = internal::make_surface_mesh_compatible(flipped, "flipped");
+    EXPECT_TRUE(mpm_test::contains_all(said, {"0 vertices were copied", "1 faces turned"})) << said;
+    EXPECT_EQ(flipped.triangles, octahedron.triangles) << "face " << first << " flipped";
+    EXPECT_EQ(flipped.points, octahedron.points);
+  }
+  EXPECT_EQ(internal::make_surface_mesh_compatible(octahedron, "octahedron"), "");
+
+  Labeled_mesh lm = two_tiles();
+  std::swap(lm.mesh.triangles[3][1], lm.mesh.triangles[3][2]);
+  lm.source = "flipped";
+  const std::vector<std::string> warnings = learn_and_drag(lm);
+  EXPECT_EQ(std::count_if(warnings.begin(), warnings.end(), [](const std::string& w) {
+              return mpm_test::contains_all(w, {"flipped: non-manifold or inconsistently oriented", "1 faces turned"});
+            }),
+            1);
 }
 
 TEST(BadInput, HolesAreAccepted)
