@@ -7,9 +7,16 @@
 #include <CGAL/MPM/internal/Indexed_surface_mesh.h>
 
 #include <stdexcept>
+#include <type_traits>
 
 namespace CGAL {
 namespace MPM {
+
+// The kernels' halfedge mesh is the example's mesh type, so that an indexed
+// mesh becomes an example through the one conversion, to_surface_mesh(),
+// with its checks and errors.
+static_assert(std::is_same<Example_mesh, internal::Indexed_surface_mesh>::value,
+              "Example_mesh and internal::Indexed_surface_mesh must stay one type");
 
 namespace {
 const char* const part_property = "f:part";
