@@ -114,7 +114,8 @@ std::string with_payload_bytes_replaced(const std::string& file, const std::stri
   return wrap_payload(payload.replace(at, from.size(), to));
 }
 
-// Integers as the model file writes them: a count (8 bytes) or an int (4).
+// Integers as the model file writes them, little-endian: a count (8 bytes)
+// or an int (4).
 std::string encoded(std::initializer_list<std::pair<std::uint64_t, int>> values)
 {
   std::string r;
@@ -127,15 +128,10 @@ std::string encoded(std::initializer_list<std::pair<std::uint64_t, int>> values)
 // payload parser with corrupt contents.
 std::string wrap_payload(const std::string& payload)
 {
-  std::string r("CGALMPM\n", 8);
-  auto put = [&r](std::uint64_t v, int bytes) { for(int i = 0; i < bytes; ++i) r.push_back(char(v >> (8 * i))); };
-  put(model_file_version, 4);
-  put(payload.size(), 8);
-  r += payload;
   boost::crc_32_type crc;
   crc.process_bytes(payload.data(), payload.size());
-  put(crc.checksum(), 4);
-  return r;
+  return std::string("CGALMPM\n", 8) + encoded({{model_file_version, 4}, {payload.size(), 8}}) + payload +
+         encoded({{crc.checksum(), 4}});
 }
 
 std::string payload_of(const std::string& file) { return file.substr(20, file.size() - 24); }
